@@ -1,0 +1,53 @@
+# csgrt — top-level Makefile. `make help` lists the targets.
+#
+# Every target depends on `deps`, which installs missing Debian packages once
+# (idempotent, silent when satisfied).
+
+SHELL      := /bin/bash
+BUILD      := build
+CXX        ?= g++
+CXXFLAGS   ?= -O2 -g
+CXXFLAGS   += -std=c++17 -Wall -Wextra -pthread -MMD -MP
+PKGS       := OpenImageIO glm
+PKG_CFLAGS  = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+
+MODEL_SRC  := $(filter-out model/main.cpp model/%_test.cpp,$(wildcard model/*.cpp))
+MODEL_OBJ  := $(MODEL_SRC:model/%.cpp=$(BUILD)/model/%.o)
+TEST_SRC   := $(wildcard model/*_test.cpp)
+TEST_OBJ   := $(TEST_SRC:model/%.cpp=$(BUILD)/model/%.o)
+
+.PHONY: all help deps model test clean
+all: model
+
+help:
+	@echo "make deps    install missing packages (apt-get)"
+	@echo "make model   build build/csgrt, the golden model and scene compiler"
+	@echo "make test    run every test; ends with 'N passed, N failed'"
+
+deps:
+	@tools/deps.sh
+
+model: deps $(BUILD)/csgrt
+
+$(BUILD)/model/%.o: model/%.cpp | deps
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) $(PKG_CFLAGS) -c $< -o $@
+
+$(BUILD)/libcsgrt.a: $(MODEL_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/csgrt: $(BUILD)/model/main.o $(BUILD)/libcsgrt.a
+	$(CXX) $(CXXFLAGS) $^ $(PKG_LIBS) -o $@
+
+$(BUILD)/model_tests: $(TEST_OBJ) $(BUILD)/libcsgrt.a
+	$(CXX) $(CXXFLAGS) $^ $(PKG_LIBS) -lgtest -lgtest_main -o $@
+
+test: deps $(BUILD)/csgrt $(BUILD)/model_tests
+	@tools/run_tests.sh
+
+clean:
+	rm -rf $(BUILD) out
+
+-include $(MODEL_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(BUILD)/model/main.d

@@ -1,0 +1,141 @@
+// main.cpp — the csgrt command line: render a scene with the golden model,
+// compile it to the binary scene image the RTL loads, or describe it.
+#include "compile.h"
+#include "image.h"
+#include "parse.h"
+#include "render.h"
+#include "scene_image.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+using namespace csgrt;
+
+namespace {
+
+const char* kUsage =
+    "usage:\n"
+    "  csgrt render SCENE.pov -o OUT.png [options]   render with the golden model\n"
+    "  csgrt compile SCENE.pov -o OUT.bin [options]  write the binary scene image (and OUT.hex)\n"
+    "  csgrt info SCENE.pov [options]                print the compiled scene\n"
+    "options:\n"
+    "  --width W --height H       image size (default 320x240)\n"
+    "  --bits B                   coordinate width, 12..32 (default 24)\n"
+    "  --arith fixed|double       fixed-point model or double reference (default fixed)\n"
+    "  --ties paper|regular       tie policy at equal t (default paper)\n"
+    "  --threads N                worker threads (default: all cores)\n"
+    "  --quiet                    no progress line\n";
+
+struct Args {
+    std::string cmd, scene, out;
+    CompileOptions copt;
+    RenderOptions ropt;
+    bool quiet = false;
+};
+
+[[noreturn]] void usage_error(const std::string& msg) {
+    std::fprintf(stderr, "csgrt: %s\n%s", msg.c_str(), kUsage);
+    std::exit(2);
+}
+
+int int_arg(const std::string& flag, const char* v) {
+    char* end = nullptr;
+    const long x = std::strtol(v, &end, 10);
+    if (!*v || *end) usage_error(flag + " expects an integer, got '" + v + "'");
+    return int(x);
+}
+
+Args parse_args(int argc, char** argv) {
+    Args a;
+    if (argc < 2) usage_error("no command");
+    a.cmd = argv[1];
+    for (int i = 2; i < argc; ++i) {
+        const std::string s = argv[i];
+        auto value = [&]() -> const char* {
+            if (i + 1 >= argc) usage_error(s + " needs a value");
+            return argv[++i];
+        };
+        if (s == "-o") a.out = value();
+        else if (s == "--width") a.copt.width = int_arg(s, value());
+        else if (s == "--height") a.copt.height = int_arg(s, value());
+        else if (s == "--bits") a.copt.bits = int_arg(s, value());
+        else if (s == "--threads") a.ropt.threads = int_arg(s, value());
+        else if (s == "--quiet") a.quiet = true;
+        else if (s == "--arith") {
+            const std::string v = value();
+            if (v == "fixed") a.ropt.arith = Arith::Fixed;
+            else if (v == "double") a.ropt.arith = Arith::Double;
+            else usage_error("--arith expects fixed or double, got '" + v + "'");
+        } else if (s == "--ties") {
+            const std::string v = value();
+            if (v == "paper") a.ropt.ties = TiePolicy::Paper;
+            else if (v == "regular") a.ropt.ties = TiePolicy::Regular;
+            else usage_error("--ties expects paper or regular, got '" + v + "'");
+        } else if (!s.empty() && s[0] == '-') usage_error("unknown option " + s);
+        else if (a.scene.empty()) a.scene = s;
+        else usage_error("unexpected argument " + s);
+    }
+    if (a.scene.empty()) usage_error("no scene file");
+    return a;
+}
+
+void print_info(const CompiledScene& cs) {
+    std::printf("scene %s: %zu leaves, %zu instructions (stack %d), %zu materials, %zu lights, %d bits\n",
+                cs.source.c_str(), cs.leaves.size(), cs.program.size(), cs.stack_depth, cs.materials.size() - 1,
+                cs.lights.size(), cs.fmt.bits);
+    std::printf("frame: centre (%g, %g, %g), scale %g\n", cs.centre.x, cs.centre.y, cs.centre.z, cs.scale);
+    for (size_t i = 0; i < cs.leaves.size(); ++i) {
+        const LeafInfo& l = cs.leaves[i];
+        std::printf("  leaf %3zu  %-22s material %d  %s\n", i, l.what.c_str(), l.material, l.pos.str().c_str());
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc >= 2 && (!std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "--help"))) {
+        std::fputs(kUsage, stdout);
+        return 0;
+    }
+    const Args a = parse_args(argc, argv);
+    try {
+        const Scene scene = parse_scene_file(a.scene);
+        const CompiledScene cs = compile_scene(scene, a.copt);
+        if (a.cmd == "info") {
+            print_info(cs);
+            return 0;
+        }
+        if (a.out.empty()) usage_error(a.cmd + " needs -o OUT");
+        if (a.cmd == "compile") {
+            std::string hex = a.out;
+            const size_t dot = hex.rfind('.');
+            hex = (dot == std::string::npos ? hex : hex.substr(0, dot)) + ".hex";
+            write_scene_image(cs, a.out, hex);
+            std::fprintf(stderr, "csgrt: wrote %s and %s (%zu leaves, %d bits, %dx%d)\n", a.out.c_str(),
+                         hex.c_str(), cs.leaves.size(), cs.fmt.bits, cs.width, cs.height);
+            return 0;
+        }
+        if (a.cmd == "render") {
+            RenderOptions ro = a.ropt;
+            ro.progress = !a.quiet;
+            const auto t0 = std::chrono::steady_clock::now();
+            const Frame f = render(cs, ro);
+            const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            write_image(a.out, f.width, f.height, f.rgb);
+            if (!a.quiet)
+                std::fprintf(stderr, "csgrt: wrote %s (%dx%d, %s, %d bits, ties %s, %.3f s)\n", a.out.c_str(),
+                             f.width, f.height, ro.arith == Arith::Fixed ? "fixed" : "double", cs.fmt.bits,
+                             ro.ties == TiePolicy::Paper ? "paper" : "regular", secs);
+            return 0;
+        }
+        usage_error("unknown command '" + a.cmd + "'");
+    } catch (const SceneError& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "csgrt: %s\n", e.what());
+        return 1;
+    }
+}

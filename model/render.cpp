@@ -1,0 +1,266 @@
+// render.cpp — camera rays, shading and the threaded frame loop (render.h).
+// The fixed functions are written in the order and with the roundings of
+// docs/numerics.md sections 2 and 6; the RTL's camera and shading units
+// mirror them line by line.
+#include "render.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+namespace csgrt {
+
+namespace {
+
+const uint8_t kSrgbLut[4096] = {
+#include "srgb_lut.inc"
+};
+
+constexpr int kColorOne = 1 << kColorFrac;
+
+// Square-root stages for unit_fx of vectors with |v_i| < 16 (F fraction
+// bits): sum v^2 < 3 * 2^8 * 2^2F < 2^(2F+10).
+int vec16_sqrt_bits(int F) { return F + 5; }
+
+i64 dot_round(const std::array<i64, 3>& x, const std::array<i64, 3>& y, int shift) {
+    i128 s = 0;
+    for (int i = 0; i < 3; ++i) s += i128(x[i]) * y[i];
+    return i64(rshift_round(s, shift));
+}
+
+}  // namespace
+
+std::array<i64, 3> unit_fx(const std::array<i64, 3>& v, int F, int sqrt_bits) {
+    u128 len2 = 0;
+    for (int i = 0; i < 3; ++i) len2 += u128(i128(v[i]) * v[i]);
+    // +1 makes the length strictly larger than |v|, so |out_i| < 2^F.
+    const u128 len = isqrt_bitwise(len2, sqrt_bits) + 1;
+    std::array<i64, 3> out{};
+    for (int i = 0; i < 3; ++i) {
+        i128 q = 0;
+        sdiv_trunc(i128(v[i]) << F, i128(len), F + 1, q);   // never overflows: |v_i| < len
+        out[i] = i64(q);
+    }
+    return out;
+}
+
+i64 pow_fx(i64 x, int n, int F) {
+    i64 result = i64(1) << F;
+    i64 base = x;
+    while (n > 0) {
+        if (n & 1) result = i64(rshift_round(i128(result) * base, F));
+        n >>= 1;
+        if (n > 0) base = i64(rshift_round(i128(base) * base, F));
+    }
+    return result;
+}
+
+uint8_t srgb_encode_fx(i64 linear) {
+    return kSrgbLut[std::clamp<i64>(linear, 0, 4095)];
+}
+
+uint8_t srgb_encode_d(double x) {
+    x = std::clamp(x, 0.0, 1.0);
+    const double s = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+    return uint8_t(std::lround(255.0 * s));
+}
+
+RayFx camera_ray_fx(const CompiledScene& cs, int x, int y) {
+    const int F = cs.fmt.frac;
+    const CameraInfo& c = cs.camera;
+    RayFx r;
+    r.o = c.origin_fx;
+    // v = base + x dx + y dy, exact with cam_frac = F + 12 fraction bits,
+    // then rounded to F + 4 fraction bits before normalising.
+    std::array<i64, 3> v;
+    for (int i = 0; i < 3; ++i) {
+        const i64 full = c.base_fx[i] + i64(x) * c.dx_fx[i] + i64(y) * c.dy_fx[i];
+        v[i] = i64(rshift_round(full, cs.fmt.cam_frac - (F + 4)));
+    }
+    // |v_i| < 8 with F + 4 fraction bits: sum v^2 < 2^(2F + 16).
+    r.d = unit_fx(v, F, F + 8);
+    return r;
+}
+
+RayD camera_ray_d(const CompiledScene& cs, int x, int y) {
+    const CameraInfo& c = cs.camera;
+    RayD r;
+    const glm::dvec3 v = c.base + double(x) * c.dx + double(y) * c.dy;
+    const glm::dvec3 d = glm::normalize(v);
+    for (int i = 0; i < 3; ++i) {
+        r.o[i] = c.origin[i];
+        r.d[i] = d[i];
+    }
+    return r;
+}
+
+std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit) {
+    if (!hit.hit) return cs.background_fx;
+    const int F = cs.fmt.frac;
+    const int FC = cs.fmt.coef_frac;
+    const int CF = kColorFrac;
+    const auto& k = cs.leaves[hit.leaf].coef;
+    const int mat_index = hit.border.to != 0 ? hit.border.to : hit.border.from;
+    const MaterialInfo& m = cs.materials[mat_index];
+
+    // Hit point p = o + t d (F fraction bits).
+    std::array<i64, 3> p;
+    for (int i = 0; i < 3; ++i) p[i] = ray.o[i] + i64(rshift_round(i128(hit.t) * ray.d[i], F));
+
+    // Normal: the gradient half A p + p_coef, rounded to F bits, made unit,
+    // and turned to face the incoming ray.
+    const i64 A[3][3] = {{k[C_A00], k[C_A01], k[C_A02]},
+                         {k[C_A01], k[C_A11], k[C_A12]},
+                         {k[C_A02], k[C_A12], k[C_A22]}};
+    std::array<i64, 3> g;
+    for (int i = 0; i < 3; ++i) {
+        i128 s = i128(k[C_P0 + i]) << F;
+        for (int j = 0; j < 3; ++j) s += i128(A[i][j]) * p[j];
+        g[i] = i64(rshift_round(s, FC));
+    }
+    std::array<i64, 3> n = unit_fx(g, F, vec16_sqrt_bits(F));
+    i128 nd = 0;
+    for (int i = 0; i < 3; ++i) nd += i128(n[i]) * ray.d[i];
+    if (nd > 0)
+        for (i64& v : n) v = -v;
+
+    // Diffuse and phong from every light (no shadows yet).
+    std::array<i64, 3> diffuse{0, 0, 0}, spec{0, 0, 0};
+    const i64 dn = dot_round(ray.d, n, F);
+    std::array<i64, 3> refl;   // the reflected view direction R = d - 2 (d.n) n
+    for (int i = 0; i < 3; ++i) refl[i] = ray.d[i] - i64(rshift_round(i128(2 * dn) * n[i], F));
+    for (const LightInfo& li : cs.lights) {
+        std::array<i64, 3> lv;
+        for (int i = 0; i < 3; ++i) lv[i] = li.pos_fx[i] - p[i];
+        const std::array<i64, 3> l = unit_fx(lv, F, vec16_sqrt_bits(F));
+        const i64 ndl = dot_round(n, l, F);
+        if (ndl > 0)
+            for (int c = 0; c < 3; ++c) diffuse[c] += i64(rshift_round(i128(li.color_fx[c]) * ndl, F));
+        if (m.phong > 0) {
+            const i64 cosr = dot_round(refl, l, F);
+            if (cosr > 0) {
+                const i64 pw = pow_fx(cosr, m.phong_size, F);
+                const i64 ph = i64(rshift_round(i128(m.phong) * pw, F));   // CF bits
+                for (int c = 0; c < 3; ++c) spec[c] += i64(rshift_round(i128(li.color_fx[c]) * ph, CF));
+            }
+        }
+    }
+    std::array<i64, 3> col;
+    for (int c = 0; c < 3; ++c) {
+        const i64 intensity = m.ambient + i64(rshift_round(i128(m.diffuse) * diffuse[c], CF));
+        col[c] = i64(rshift_round(i128(m.rgb[c]) * intensity, CF)) + spec[c];
+    }
+    return col;
+}
+
+std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const TraceResult<double>& hit) {
+    if (!hit.hit) return {cs.background.x, cs.background.y, cs.background.z};
+    const QuadricD& q = cs.leaves[hit.leaf].quad;
+    const int mat_index = hit.border.to != 0 ? hit.border.to : hit.border.from;
+    const MaterialInfo& m = cs.materials[mat_index];
+    const glm::dvec3 o(ray.o[0], ray.o[1], ray.o[2]), d(ray.d[0], ray.d[1], ray.d[2]);
+    const glm::dvec3 p = o + hit.t * d;
+    glm::dvec3 n = q.A * p + q.p;
+    const double nl = glm::length(n);
+    n = nl > 0.0 ? n / nl : glm::dvec3(0.0);
+    if (glm::dot(n, d) > 0.0) n = -n;
+    const glm::dvec3 refl = d - 2.0 * glm::dot(d, n) * n;
+    glm::dvec3 diffuse(0.0), spec(0.0);
+    for (const LightInfo& li : cs.lights) {
+        const glm::dvec3 l = glm::normalize(li.pos - p);
+        const double ndl = glm::dot(n, l);
+        if (ndl > 0.0) diffuse += li.color * ndl;
+        if (m.finish.phong > 0.0) {
+            const double cosr = glm::dot(refl, l);
+            if (cosr > 0.0) spec += li.color * (m.finish.phong * std::pow(cosr, double(m.phong_size)));
+        }
+    }
+    std::array<double, 3> col;
+    for (int c = 0; c < 3; ++c)
+        col[c] = m.pigment.rgb[c] * (m.finish.ambient + m.finish.diffuse * diffuse[c]) + spec[c];
+    return col;
+}
+
+PixelTrace render_pixel_fx(const CompiledScene& cs, int x, int y, TiePolicy ties, bool diag) {
+    PixelTrace pt;
+    pt.ray = camera_ray_fx(cs, x, y);
+    pt.trace = trace_primary_fx(cs, pt.ray, ties, diag);
+    const std::array<i64, 3> col = shade_fx(cs, pt.ray, pt.trace);
+    for (int c = 0; c < 3; ++c) pt.rgb[c] = srgb_encode_fx(col[c]);
+    return pt;
+}
+
+Frame render(const CompiledScene& cs, const RenderOptions& opt) {
+    Frame f;
+    f.width = cs.width;
+    f.height = cs.height;
+    const size_t npix = size_t(f.width) * f.height;
+    f.rgb.assign(npix * 3, 0);
+    f.hit_leaf.assign(npix, -1);
+    f.material.assign(npix, 0);
+
+    auto do_row = [&](int y) {
+        for (int x = 0; x < f.width; ++x) {
+            const size_t i = size_t(y) * f.width + x;
+            int leaf = -1, mat = 0;
+            uint8_t rgb[3];
+            if (opt.arith == Arith::Fixed) {
+                const PixelTrace pt = render_pixel_fx(cs, x, y, opt.ties, false);
+                for (int c = 0; c < 3; ++c) rgb[c] = pt.rgb[c];
+                if (pt.trace.hit) {
+                    leaf = pt.trace.leaf;
+                    mat = pt.trace.border.to ? pt.trace.border.to : pt.trace.border.from;
+                }
+            } else {
+                const RayD ray = camera_ray_d(cs, x, y);
+                const TraceResult<double> tr = trace_primary_d(cs, ray, opt.ties);
+                const std::array<double, 3> col = shade_d(cs, ray, tr);
+                for (int c = 0; c < 3; ++c) rgb[c] = srgb_encode_d(col[c]);
+                if (tr.hit) {
+                    leaf = tr.leaf;
+                    mat = tr.border.to ? tr.border.to : tr.border.from;
+                }
+            }
+            for (int c = 0; c < 3; ++c) f.rgb[i * 3 + c] = rgb[c];
+            f.hit_leaf[i] = int16_t(leaf);
+            f.material[i] = uint8_t(mat);
+        }
+    };
+
+    int nthreads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    std::atomic<int> next_row{0}, rows_done{0};
+    const auto start = std::chrono::steady_clock::now();
+    auto worker = [&]() {
+        for (int y; (y = next_row.fetch_add(1)) < f.height;) {
+            do_row(y);
+            rows_done.fetch_add(1);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < nthreads; ++i) pool.emplace_back(worker);
+    if (opt.progress) {
+        // the calling thread works too and reports about ten times a second
+        std::thread reporter([&]() {
+            while (rows_done.load() < f.height) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(200));
+                const double s =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                std::fprintf(stderr, "\rrender: %3d%% (%d/%d rows, %.1f s)", 100 * rows_done.load() / f.height,
+                             rows_done.load(), f.height, s);
+            }
+        });
+        worker();
+        reporter.join();
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "\rrender: 100%% (%d rows, %.2f s)          \n", f.height, s);
+    } else {
+        worker();
+    }
+    for (auto& t : pool) t.join();
+    return f;
+}
+
+}  // namespace csgrt

@@ -1,0 +1,69 @@
+// render.h — camera, shading and the frame loop of the golden model.
+//
+// The fixed path (Arith::Fixed) is integer-only and defines the pixels the
+// RTL must produce; the double path (Arith::Double) runs the same algorithm
+// on the unquantised scene, to measure the fixed-point error.
+#pragma once
+
+#include "compile.h"
+#include "trace.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace csgrt {
+
+enum class Arith { Fixed, Double };
+
+struct RenderOptions {
+    Arith arith = Arith::Fixed;
+    TiePolicy ties = TiePolicy::Paper;
+    int threads = 0;                 // 0: all cores
+    bool progress = false;           // a progress line on stderr
+};
+
+// One rendered frame: 8-bit sRGB pixels and, per pixel, what the primary
+// ray struck (for masks, tests and co-simulation reports).
+struct Frame {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgb;        // width * height * 3
+    std::vector<int16_t> hit_leaf;   // -1: background
+    std::vector<uint8_t> material;   // material shown, 0: background
+    bool is_object(int x, int y) const { return hit_leaf[size_t(y) * width + x] >= 0; }
+};
+
+// Primary ray of pixel (x, y) (numerics.md section 2).
+RayFx camera_ray_fx(const CompiledScene& cs, int x, int y);
+RayD camera_ray_d(const CompiledScene& cs, int x, int y);
+
+// Unit vector of v (any common fraction) with F fraction bits, |out_i| <
+// 2^F: out_i = trunc(v_i * 2^F / (isqrt(sum v^2) + 1)). sqrt_bits is the
+// number of square-root stages: sum v^2 must be below 4^sqrt_bits.
+std::array<i64, 3> unit_fx(const std::array<i64, 3>& v, int F, int sqrt_bits);
+
+// x^n with F fraction bits, binary exponentiation from the exponent's least
+// significant bit, rounding each product (numerics.md section 6).
+i64 pow_fx(i64 x, int n, int F);
+
+// Linear colour (kColorFrac bits) to an 8-bit sRGB code.
+uint8_t srgb_encode_fx(i64 linear);
+uint8_t srgb_encode_d(double linear);
+
+// Shade a primary-ray result: linear colour, kColorFrac fraction bits.
+std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit);
+std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const TraceResult<double>& hit);
+
+// The whole frame.
+Frame render(const CompiledScene& cs, const RenderOptions& opt);
+
+// Render one pixel of the fixed path, with the trace kept for reports.
+struct PixelTrace {
+    RayFx ray;
+    TraceResult<i64> trace;
+    std::array<uint8_t, 3> rgb{};
+};
+PixelTrace render_pixel_fx(const CompiledScene& cs, int x, int y, TiePolicy ties, bool keep_diagnostics);
+
+}  // namespace csgrt

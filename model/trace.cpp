@@ -1,0 +1,246 @@
+// trace.cpp — ray-quadric events and the exact walk (see trace.h and
+// docs/numerics.md). The fixed-point intersection is written step by step in
+// the order the RTL pipeline computes it; every rounding is rshift_round
+// (round half up) or sdiv_trunc (toward zero), nothing else.
+#include "trace.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace csgrt {
+
+namespace {
+
+// Fixed-point quotient with saturation: t = n / d (F fraction bits in n
+// already), |t| < 2^(F+1) ulps, i.e. |t| < 2 in scene units.
+void set_t(Event<i64>& e, i128 num, i128 den, int quot_bits) {
+    i128 q;
+    if (sdiv_trunc(num, den, quot_bits, q)) {
+        e.t = i64(q);
+        e.range = TRange::Finite;
+    } else {
+        e.range = ((num < 0) != (den < 0)) ? TRange::NegInf : TRange::PosInf;
+        e.t = 0;
+    }
+}
+
+// Two events of one leaf that landed on the same t (a tangent ray, or a
+// chord thinner than one ulp of t) cross nothing: both are dropped. Their
+// net effect on the leaf's flag is zero either way.
+template <typename T>
+void drop_equal_pair(LeafEvents<T>& le) {
+    if (le.count == 2 && le.ev[0].range == le.ev[1].range &&
+        (le.ev[0].range != TRange::Finite || le.ev[0].t == le.ev[1].t))
+        le.count = 0;
+}
+
+}  // namespace
+
+LeafEvents<i64> intersect_fx(const Formats& fmt, const std::array<i64, kNumCoefs>& k, const RayFx& r) {
+    const int F = fmt.frac;
+    const int FC = fmt.coef_frac;
+    LeafEvents<i64> le;
+
+    // Stage 1: u = A d and w = A o + p (exact sums of products, FC+F fraction
+    // bits), each rounded once to F fraction bits.
+    const i64 A[3][3] = {{k[C_A00], k[C_A01], k[C_A02]},
+                         {k[C_A01], k[C_A11], k[C_A12]},
+                         {k[C_A02], k[C_A12], k[C_A22]}};
+    const i64 p[3] = {k[C_P0], k[C_P1], k[C_P2]};
+    i64 u[3], w[3];
+    for (int i = 0; i < 3; ++i) {
+        i128 su = 0, sw = i128(p[i]) << F;
+        for (int j = 0; j < 3; ++j) {
+            su += i128(A[i][j]) * r.d[j];
+            sw += i128(A[i][j]) * r.o[j];
+        }
+        u[i] = i64(rshift_round(su, FC));
+        w[i] = i64(rshift_round(sw, FC));
+    }
+
+    // Stage 2: coefficients along the ray, Q(t) = a t^2 + 2 b t + c,
+    //   a = d.u, b = d.w, c = o.(w + p) + q, each rounded once to F bits.
+    i128 sa = 0, sb = 0, sc = 0;
+    for (int i = 0; i < 3; ++i) {
+        sa += i128(r.d[i]) * u[i];
+        sb += i128(r.d[i]) * w[i];
+        sc += i128(r.o[i]) * (w[i] + i64(rshift_round(p[i], FC - F)));
+    }
+    const i64 a = i64(rshift_round(sa, F));
+    const i64 b = i64(rshift_round(sb, F));
+    const i64 c = i64(rshift_round(sc, F)) + i64(rshift_round(k[C_Q], FC - F));
+    le.a = a;
+    le.b = b;
+    le.c = c;
+
+    const int quot_bits = F + 1;   // |t| < 2
+    if (a == 0) {
+        // Linear along the ray: Q = 2 b t + c.
+        if (b == 0) {
+            le.inside_at_minus_inf = c <= 0;
+            return le;
+        }
+        le.inside_at_minus_inf = b > 0;      // Q -> -inf as t -> -inf
+        le.count = 1;
+        le.ev[0].entering = b < 0;           // Q decreasing: entering Q <= 0
+        set_t(le.ev[0], -(i128(c) << F), 2 * i128(b), quot_bits);
+        return le;
+    }
+
+    // Stage 3: discriminant, exact (2F fraction bits).
+    le.inside_at_minus_inf = a < 0;
+    const i128 disc = i128(b) * b - i128(a) * c;
+    if (disc < 0) return le;
+    const int sqrt_bits = F + 6;              // disc < 2^(2F+12): numerics.md
+    if (u128(disc) >> (2 * sqrt_bits)) throw std::logic_error("intersect_fx: discriminant bound violated");
+    const i64 s = i64(isqrt_bitwise(u128(disc), sqrt_bits));   // floor(sqrt), F bits
+
+    // Stage 4: roots by the stable formula qq = -(b + sgn(b) s), sgn(0) = +1:
+    //   t_first = qq / a, t_second = c / qq.
+    // At the root (-b - s)/a the ray enters (dQ/dt = -2s), at (-b + s)/a it
+    // leaves: with b >= 0 t_first is the entering root, with b < 0 the leaving.
+    const i64 qq = (b >= 0) ? -(b + s) : -(b - s);
+    Event<i64>& first = le.ev[0];
+    Event<i64>& second = le.ev[1];
+    first.entering = (b >= 0);
+    second.entering = !(b >= 0);
+    set_t(first, i128(qq) << F, a, quot_bits);
+    if (qq != 0)
+        set_t(second, i128(c) << F, qq, quot_bits);
+    else
+        second.t = first.t, second.range = first.range;   // b = s = 0: c = 0, double root at 0
+    le.count = 2;
+    drop_equal_pair(le);
+    return le;
+}
+
+LeafEvents<double> intersect_d(const QuadricD& q, const RayD& r) {
+    LeafEvents<double> le;
+    const glm::dvec3 o(r.o[0], r.o[1], r.o[2]), d(r.d[0], r.d[1], r.d[2]);
+    const double a = glm::dot(d, q.A * d);
+    const double b = glm::dot(d, q.A * o + q.p);
+    const double c = glm::dot(o, q.A * o) + 2.0 * glm::dot(q.p, o) + q.q;
+    le.a = a;
+    le.b = b;
+    le.c = c;
+    auto set = [](Event<double>& e, double t) {
+        e.t = t;
+        e.range = (t >= 2.0) ? TRange::PosInf : (t <= -2.0) ? TRange::NegInf : TRange::Finite;
+        if (!std::isfinite(t)) e.range = (t > 0) ? TRange::PosInf : TRange::NegInf;
+    };
+    if (a == 0.0) {
+        if (b == 0.0) {
+            le.inside_at_minus_inf = c <= 0.0;
+            return le;
+        }
+        le.inside_at_minus_inf = b > 0.0;
+        le.count = 1;
+        le.ev[0].entering = b < 0.0;
+        set(le.ev[0], -c / (2.0 * b));
+        return le;
+    }
+    le.inside_at_minus_inf = a < 0.0;
+    const double disc = b * b - a * c;
+    if (disc < 0.0) return le;
+    const double s = std::sqrt(disc);
+    const double qq = (b >= 0.0) ? -(b + s) : -(b - s);
+    le.ev[0].entering = (b >= 0.0);
+    le.ev[1].entering = !(b >= 0.0);
+    set(le.ev[0], qq / a);
+    if (qq != 0.0)
+        set(le.ev[1], c / qq);
+    else
+        le.ev[1].t = le.ev[0].t, le.ev[1].range = le.ev[0].range;
+    le.count = 2;
+    drop_equal_pair(le);
+    return le;
+}
+
+template <typename T>
+bool event_before(const Event<T>& x, const Event<T>& y, TiePolicy ties) {
+    if (x.t != y.t) return x.t < y.t;
+    if (ties == TiePolicy::Paper) return x.leaf < y.leaf;
+    // regular: entering before leaving; entering in descending leaf order,
+    // leaving in ascending leaf order.
+    if (x.entering != y.entering) return x.entering;
+    return x.entering ? x.leaf > y.leaf : x.leaf < y.leaf;
+}
+template bool event_before(const Event<i64>&, const Event<i64>&, TiePolicy);
+template bool event_before(const Event<double>&, const Event<double>&, TiePolicy);
+
+namespace {
+
+// The walk shared by both arithmetics. `flags` holds the origin flags on
+// entry; events behind the origin have already been applied (primary) or are
+// ignored (secondary).
+template <typename T>
+TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::vector<uint8_t>& flags,
+                    TiePolicy ties, bool diag) {
+    TraceResult<T> res;
+    if (diag) res.origin_flags = flags;
+    std::sort(ahead.begin(), ahead.end(),
+              [ties](const Event<T>& x, const Event<T>& y) { return event_before(x, y, ties); });
+    if (diag) res.events = ahead;
+    for (const Event<T>& e : ahead) {
+        // Validity check: entering while IN or leaving while OUT is impossible.
+        if (bool(flags[e.leaf]) == e.entering) continue;
+        const Class cl = classify(cs.program, flags.data(), cs.leaf_material.data(), e.leaf, e.entering);
+        if (cl.kind == Class::BORDER && cl.from != cl.to) {
+            res.hit = true;
+            res.t = e.t;
+            res.leaf = e.leaf;
+            res.entering = e.entering;
+            res.border = cl;
+            res.flags_before = flags;
+            flags[e.leaf] = e.entering;
+            res.flags_after = flags;
+            return res;
+        }
+        flags[e.leaf] = e.entering;
+    }
+    return res;
+}
+
+template <typename T, typename Intersect>
+TraceResult<T> trace_generic(const CompiledScene& cs, Intersect isect, const std::vector<uint8_t>* inherited,
+                             TiePolicy ties, bool diag) {
+    const size_t n = cs.leaves.size();
+    std::vector<uint8_t> flags(n);
+    std::vector<Event<T>> ahead;
+    ahead.reserve(2 * n);
+    for (size_t l = 0; l < n; ++l) {
+        LeafEvents<T> le = isect(l);
+        bool f = inherited ? (*inherited)[l] : le.inside_at_minus_inf;
+        for (int i = 0; i < le.count; ++i) {
+            Event<T> e = le.ev[i];
+            e.leaf = uint16_t(l);
+            if (e.ahead())
+                ahead.push_back(e);
+            else if (!inherited && e.behind())
+                f = !f;   // each crossing behind the origin toggles the state
+        }
+        flags[l] = f;
+    }
+    return walk<T>(cs, ahead, flags, ties, diag);
+}
+
+}  // namespace
+
+TraceResult<i64> trace_primary_fx(const CompiledScene& cs, const RayFx& ray, TiePolicy ties, bool diag) {
+    return trace_generic<i64>(
+        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, nullptr, ties, diag);
+}
+
+TraceResult<double> trace_primary_d(const CompiledScene& cs, const RayD& ray, TiePolicy ties, bool diag) {
+    return trace_generic<double>(
+        cs, [&](size_t l) { return intersect_d(cs.leaves[l].quad, ray); }, nullptr, ties, diag);
+}
+
+TraceResult<i64> trace_secondary_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>& flags,
+                                    TiePolicy ties, bool diag) {
+    return trace_generic<i64>(
+        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, &flags, ties, diag);
+}
+
+}  // namespace csgrt
