@@ -45,7 +45,7 @@ $(BUILD)/model_tests: $(TEST_OBJ) $(BUILD)/libcsgrt.a
 	$(CXX) $(CXXFLAGS) $^ $(PKG_LIBS) -lgtest -lgtest_main -o $@
 
 test: deps $(BUILD)/csgrt $(BUILD)/model_tests
-	@tools/run_tests.sh
+	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS)
 
 clean:
 	rm -rf $(BUILD) out
