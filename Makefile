@@ -17,13 +17,24 @@ MODEL_OBJ  := $(MODEL_SRC:model/%.cpp=$(BUILD)/model/%.o)
 TEST_SRC   := $(wildcard model/*_test.cpp)
 TEST_OBJ   := $(TEST_SRC:model/%.cpp=$(BUILD)/model/%.o)
 
-.PHONY: all help deps model test clean
+.PHONY: all help deps model render test bench-model clean
 all: model
+
+# Parameters of the render and simulation targets.
+SCENE ?= scenes/default.pov
+BITS  ?= 24
+TIES  ?= paper
+WIDTH ?= 320
+HEIGHT ?= 240
+scene_name = $(basename $(notdir $(SCENE)))
 
 help:
 	@echo "make deps    install missing packages (apt-get)"
 	@echo "make model   build build/csgrt, the golden model and scene compiler"
+	@echo "make render [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [WIDTH=320] [HEIGHT=240]"
+	@echo "             render with the golden model to out/model/<scene>.png"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
+	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
 
 deps:
 	@tools/deps.sh
@@ -46,6 +57,14 @@ $(BUILD)/model_tests: $(TEST_OBJ) $(BUILD)/libcsgrt.a
 
 test: deps $(BUILD)/csgrt $(BUILD)/model_tests
 	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS)
+
+render: model
+	@mkdir -p out/model
+	$(BUILD)/csgrt render $(SCENE) -o out/model/$(scene_name).png --bits $(BITS) --ties $(TIES) \
+	    --width $(WIDTH) --height $(HEIGHT)
+
+bench-model: model
+	@tools/bench_model.sh
 
 clean:
 	rm -rf $(BUILD) out

@@ -85,6 +85,61 @@ Class classify(const std::vector<Instr>& program, const uint8_t* flags,
     return sp > 0 ? stack[sp - 1] : Class::out();
 }
 
+ClassTree::ClassTree(const std::vector<Instr>& program) {
+    std::vector<int> stack;
+    for (const Instr& ins : program) {
+        Node n;
+        n.op = ins.op;
+        if (ins.op == Op::LEAF) {
+            n.leaf = ins.arg;
+            if (int(leaf_node_.size()) <= ins.arg) leaf_node_.resize(ins.arg + 1, -1);
+            leaf_node_[ins.arg] = int(nodes_.size());
+        } else {
+            n.right = stack.back();
+            stack.pop_back();
+            n.left = stack.back();
+            stack.pop_back();
+            nodes_[n.left].parent = nodes_[n.right].parent = int(nodes_.size());
+        }
+        stack.push_back(int(nodes_.size()));
+        nodes_.push_back(n);
+    }
+    root_ = stack.empty() ? -1 : stack.back();
+    steady_.resize(nodes_.size());
+    material_.resize(leaf_node_.size());
+}
+
+void ClassTree::reset(const uint8_t* flags, const uint8_t* leaf_material) {
+    for (size_t l = 0; l < material_.size(); ++l) material_[l] = leaf_material[l];
+    // nodes are in post-order: children before parents
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+        const Node& n = nodes_[i];
+        steady_[i] = n.op == Op::LEAF ? leaf_class(n.leaf, flags[n.leaf])
+                                      : combine(n.op, steady_[n.left], steady_[n.right]);
+    }
+}
+
+Class ClassTree::classify(int hit_leaf, bool entering) const {
+    if (root_ < 0) return Class::out();
+    const uint8_t m = material_[hit_leaf];
+    Class c = entering ? Class::border(0, m) : Class::border(m, 0);
+    for (int child = leaf_node_[hit_leaf], p = nodes_[child].parent; p >= 0; child = p, p = nodes_[p].parent) {
+        const Node& n = nodes_[p];
+        c = (n.left == child) ? combine(n.op, c, steady_[n.right]) : combine(n.op, steady_[n.left], c);
+    }
+    return c;
+}
+
+void ClassTree::set_flag(int leaf, bool in) {
+    int i = leaf_node_[leaf];
+    steady_[i] = leaf_class(leaf, in);
+    for (int p = nodes_[i].parent; p >= 0; p = nodes_[p].parent) {
+        const Class v = combine(nodes_[p].op, steady_[nodes_[p].left], steady_[nodes_[p].right]);
+        if (v == steady_[p]) break;   // nothing above changes either
+        steady_[p] = v;
+    }
+}
+
 int stack_depth(const std::vector<Instr>& program) {
     int sp = 0, max_sp = 0;
     for (const Instr& ins : program) {

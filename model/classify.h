@@ -48,6 +48,37 @@ Class combine(Op op, Class l, Class r);
 Class classify(const std::vector<Instr>& program, const uint8_t* flags,
                const uint8_t* leaf_material, int hit_leaf, bool entering);
 
+// The same classification, incrementally: the tree behind a program, with
+// each node's classification for the current flags ("steady" values, never
+// BORDER). Classifying an event then combines the BORDER of its leaf with
+// the steady values of the siblings along the path to the root, which is
+// exactly what the program computes (every node off that path holds its
+// steady value), in depth rather than program-length steps. The model's
+// walk uses it for speed; classify_test.cpp checks it against classify().
+class ClassTree {
+  public:
+    ClassTree() = default;
+    explicit ClassTree(const std::vector<Instr>& program);
+    // Sets every leaf's flag and recomputes all steady values.
+    void reset(const uint8_t* flags, const uint8_t* leaf_material);
+    Class classify(int hit_leaf, bool entering) const;
+    // Sets one leaf's flag and updates its ancestors.
+    void set_flag(int leaf, bool in);
+
+  private:
+    struct Node {
+        Op op;
+        int left = -1, right = -1, parent = -1;
+        int leaf = -1;
+    };
+    Class leaf_class(int leaf, bool in) const { return in ? Class::in(material_[leaf]) : Class::out(); }
+    std::vector<Node> nodes_;
+    std::vector<int> leaf_node_;
+    std::vector<uint8_t> material_;
+    std::vector<Class> steady_;
+    int root_ = -1;
+};
+
 // Largest stack depth the program reaches.
 int stack_depth(const std::vector<Instr>& program);
 

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <vector>
 
 using namespace csgrt;
@@ -124,4 +125,36 @@ TEST(Tables, ProgramClassifiesATree) {
     // leaving leaf 0 inside the cutter: nothing visible
     EXPECT_EQ(classify(prog, flags, mats, 0, false), Class::out());
     EXPECT_EQ(stack_depth(prog), 2);
+}
+
+TEST(Tables, IncrementalTreeEqualsTheProgram) {
+    // random trees, flags and events: ClassTree (the walk's classifier)
+    // must give exactly what the post-order program gives
+    std::mt19937 rng(5);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const int leaves = 1 + int(rng() % 12);
+        std::vector<Instr> prog;
+        int sp = 0, next_leaf = 0;
+        while (next_leaf < leaves || sp > 1) {
+            if (next_leaf < leaves && (sp < 2 || rng() % 2)) {
+                prog.push_back({Op::LEAF, uint16_t(next_leaf++)});
+                ++sp;
+            } else {
+                prog.push_back({Op(1 + rng() % 3), 0});
+                --sp;
+            }
+        }
+        std::vector<uint8_t> mats(leaves), flags(leaves);
+        for (auto& m : mats) m = uint8_t(1 + rng() % 3);
+        for (auto& f : flags) f = rng() % 2;
+        ClassTree tree(prog);
+        tree.reset(flags.data(), mats.data());
+        for (int step = 0; step < 30; ++step) {
+            const int leaf = int(rng() % leaves);
+            const bool entering = rng() % 2;
+            ASSERT_EQ(tree.classify(leaf, entering), classify(prog, flags.data(), mats.data(), leaf, entering));
+            flags[leaf] = rng() % 2;
+            tree.set_flag(leaf, flags[leaf]);
+        }
+    }
 }

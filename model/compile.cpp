@@ -390,6 +390,7 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
         cs.leaf_material.push_back(uint8_t(pl.material));
     }
     cs.program = fl.program;
+    cs.class_tree = ClassTree(cs.program);
 
     // 5. Materials.
     cs.materials = fl.materials;

@@ -88,6 +88,7 @@ struct CompiledScene {
     std::vector<LeafInfo> leaves;
     std::vector<Instr> program;
     std::vector<uint8_t> leaf_material;    // leaves[i].material, for classify()
+    ClassTree class_tree;                  // the program as a tree (set with the program)
     int max_trace_level = 5;
     int stack_depth = 0;
     bool identical_coefs(int leaf_a, int leaf_b) const { return leaves[leaf_a].coef == leaves[leaf_b].coef; }

@@ -76,6 +76,18 @@ inline u128 udiv_bitwise(u128 n, u128 d, int quot_bits) {
     return q;
 }
 
+// floor(sqrt(n)) computed quickly (floating-point estimate, then corrected
+// with exact integer comparisons). Returns exactly what isqrt_bitwise
+// returns; the render path uses it for speed and fixed_test.cpp checks the
+// two against each other.
+inline u128 isqrt_fast(u128 n) {
+    if (n == 0) return 0;
+    u128 r = u128(__builtin_sqrtl((long double)n));
+    while (r * r > n) --r;
+    while ((r + 1) * (r + 1) <= n) ++r;
+    return r;
+}
+
 // True when floor(n / d) does not fit in quot_bits bits: n >= d * 2^quot_bits.
 inline bool div_overflows(u128 n, u128 d, int quot_bits) {
     return (n >> quot_bits) >= d;
@@ -89,7 +101,10 @@ inline u128 uabs(i128 x) { return x < 0 ? u128(-x) : u128(x); }
 inline bool sdiv_trunc(i128 n, i128 d, int quot_bits, i128& q) {
     u128 un = uabs(n), ud = uabs(d);
     if (div_overflows(un, ud, quot_bits)) return false;
-    u128 uq = udiv_bitwise(un, ud, quot_bits);
+    // floor(un / ud): the same value udiv_bitwise computes one bit per stage
+    // (fixed_test.cpp checks them against each other); native division is
+    // used here for speed.
+    u128 uq = (un >> 64 == 0 && ud >> 64 == 0) ? u128(u64(un) / u64(ud)) : un / ud;
     q = ((n < 0) != (d < 0)) ? -i128(uq) : i128(uq);
     return true;
 }

@@ -64,7 +64,7 @@ TEST(Fixed, IsqrtRandomWide) {
         // corners: perfect squares and their neighbours, the largest input
         for (u128 r : {u128(0), u128(1), (u128(1) << stages) - 1, u128(123456789)}) {
             EXPECT_EQ(isqrt_bitwise(r * r, stages), r);
-            if (r > 0) EXPECT_EQ(isqrt_bitwise(r * r - 1, stages), r - 1);
+            if (r > 0) { EXPECT_EQ(isqrt_bitwise(r * r - 1, stages), r - 1); }
         }
     }
 }
@@ -79,7 +79,7 @@ TEST(Fixed, DivExhaustiveSmall) {
             const i64 exact = n / d;   // C++ truncates toward zero
             const bool fits = (n < 0 ? -n : n) / (d < 0 ? -d : d) < (1 << qb);
             ASSERT_EQ(ok, fits) << n << "/" << d;
-            if (ok) ASSERT_EQ(i64(q), exact) << n << "/" << d;
+            if (ok) { ASSERT_EQ(i64(q), exact) << n << "/" << d; }
         }
 }
 
@@ -99,7 +99,26 @@ TEST(Fixed, DivRandomWide) {
             const i128 exact = n / d;
             const bool fits = (exact < 0 ? -exact : exact) < (i128(1) << qb);
             ASSERT_EQ(ok, fits);
-            if (ok) ASSERT_TRUE(q == exact);
+            if (ok) { ASSERT_TRUE(q == exact); }
+        }
+    }
+}
+
+TEST(Fixed, FastPathsEqualTheBitSerialAlgorithms) {
+    // The render path uses isqrt_fast and native division; they must return
+    // exactly what the one-bit-per-stage algorithms (the RTL's) return.
+    std::mt19937_64 rng(3);
+    for (int i = 0; i < 300000; ++i) {
+        const int stages = 1 + int(rng() % 40);
+        const u128 n = random_bits(rng, 1 + int(rng() % (2 * stages)));
+        ASSERT_TRUE(isqrt_fast(n) == isqrt_bitwise(n, stages));
+        const int qb = 1 + int(rng() % 36);
+        const u128 d = random_bits(rng, 1 + int(rng() % 40)) | 1;
+        const u128 num = random_bits(rng, 1 + int(rng() % 70));
+        if (!div_overflows(num, d, qb)) {
+            i128 q;
+            ASSERT_TRUE(sdiv_trunc(i128(num), i128(d), qb, q));
+            ASSERT_TRUE(u128(q) == udiv_bitwise(num, d, qb));
         }
     }
 }

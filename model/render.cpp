@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <thread>
 
 namespace csgrt {
@@ -37,7 +38,8 @@ std::array<i64, 3> unit_fx(const std::array<i64, 3>& v, int F, int sqrt_bits) {
     u128 len2 = 0;
     for (int i = 0; i < 3; ++i) len2 += u128(i128(v[i]) * v[i]);
     // +1 makes the length strictly larger than |v|, so |out_i| < 2^F.
-    const u128 len = isqrt_bitwise(len2, sqrt_bits) + 1;
+    if (len2 >> (2 * sqrt_bits)) throw std::logic_error("unit_fx: length bound violated");
+    const u128 len = isqrt_fast(len2) + 1;   // = isqrt_bitwise(len2, sqrt_bits) + 1
     std::array<i64, 3> out{};
     for (int i = 0; i < 3; ++i) {
         i128 q = 0;

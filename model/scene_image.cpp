@@ -116,6 +116,7 @@ CompiledScene decode_scene_image(const std::vector<uint32_t>& w) {
         const uint32_t v = w.at(i++);
         cs.program.push_back({Op(v & 0xff), uint16_t(v >> 8)});
     }
+    cs.class_tree = ClassTree(cs.program);
     return cs;
 }
 

@@ -94,7 +94,7 @@ LeafEvents<i64> intersect_fx(const Formats& fmt, const std::array<i64, kNumCoefs
     if (disc < 0) return le;
     const int sqrt_bits = F + 6;              // disc < 2^(2F+12): numerics.md
     if (u128(disc) >> (2 * sqrt_bits)) throw std::logic_error("intersect_fx: discriminant bound violated");
-    const i64 s = i64(isqrt_bitwise(u128(disc), sqrt_bits));   // floor(sqrt), F bits
+    const i64 s = i64(isqrt_fast(u128(disc)));   // floor(sqrt), F bits (= isqrt_bitwise(disc, sqrt_bits))
 
     // Stage 4: roots by the stable formula qq = -(b + sgn(b) s), sgn(0) = +1:
     //   t_first = qq / a, t_second = c / qq.
@@ -182,10 +182,16 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
     std::sort(ahead.begin(), ahead.end(),
               [ties](const Event<T>& x, const Event<T>& y) { return event_before(x, y, ties); });
     if (diag) res.events = ahead;
+    thread_local ClassTree tree;
+    if (!ahead.empty()) {
+        tree = cs.class_tree;   // copy-assignment reuses this thread's buffers
+        tree.reset(flags.data(), cs.leaf_material.data());
+    }
     for (const Event<T>& e : ahead) {
         // Validity check: entering while IN or leaving while OUT is impossible.
         if (bool(flags[e.leaf]) == e.entering) continue;
-        const Class cl = classify(cs.program, flags.data(), cs.leaf_material.data(), e.leaf, e.entering);
+        // classify(cs.program, flags, ...) evaluated incrementally (ClassTree)
+        const Class cl = tree.classify(e.leaf, e.entering);
         if (cl.kind == Class::BORDER && cl.from != cl.to) {
             res.hit = true;
             res.t = e.t;
@@ -198,6 +204,7 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             return res;
         }
         flags[e.leaf] = e.entering;
+        tree.set_flag(e.leaf, e.entering);
     }
     return res;
 }
