@@ -22,10 +22,6 @@ const uint8_t kSrgbLut[4096] = {
 
 constexpr int kColorOne = 1 << kColorFrac;
 
-// Square-root stages for unit_fx of vectors with |v_i| < 16 (F fraction
-// bits): sum v^2 < 3 * 2^8 * 2^2F < 2^(2F+10).
-int vec16_sqrt_bits(int F) { return F + 5; }
-
 i64 dot_round(const std::array<i64, 3>& x, const std::array<i64, 3>& y, int shift) {
     i128 s = 0;
     for (int i = 0; i < 3; ++i) s += i128(x[i]) * y[i];
@@ -99,53 +95,68 @@ RayD camera_ray_d(const CompiledScene& cs, int x, int y) {
     return r;
 }
 
+// Re-align a fixed-point value from `from` to `to` fraction bits: rounded
+// (rnd) when dropping bits, exact when adding them.
+i64 align(i64 v, int from, int to) {
+    return from >= to ? i64(rshift_round(v, from - to)) : v << (to - from);
+}
+
 std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit) {
     if (!hit.hit) return cs.background_fx;
     const int F = cs.fmt.frac;
     const int FC = cs.fmt.coef_frac;
     const int CF = kColorFrac;
+    const int SF = kShadeFrac;     // unit vectors
+    const int PF = kShadePosFrac;  // positions and the gradient
     const auto& k = cs.leaves[hit.leaf].coef;
     const int mat_index = hit.border.to != 0 ? hit.border.to : hit.border.from;
     const MaterialInfo& m = cs.materials[mat_index];
 
-    // Hit point p = o + t d (F fraction bits).
-    std::array<i64, 3> p;
-    for (int i = 0; i < 3; ++i) p[i] = ray.o[i] + i64(rshift_round(i128(hit.t) * ray.d[i], F));
+    // Hit point p = o + t d (geometry: F fraction bits), then the shading
+    // copies of point, coefficients and direction (fixed widths, any B).
+    std::array<i64, 3> ps, ds;
+    for (int i = 0; i < 3; ++i) {
+        const i64 p = ray.o[i] + i64(rshift_round(i128(hit.t) * ray.d[i], F));
+        ps[i] = align(p, F, PF);
+        ds[i] = align(ray.d[i], F, SF);
+    }
+    i64 ks[kNumCoefs];
+    for (int c = 0; c < kNumCoefs; ++c) ks[c] = align(k[c], FC, SF);
 
-    // Normal: the gradient half A p + p_coef, rounded to F bits, made unit,
+    // Normal: the gradient half A p + p_coef (PF bits), made unit (SF bits)
     // and turned to face the incoming ray.
-    const i64 A[3][3] = {{k[C_A00], k[C_A01], k[C_A02]},
-                         {k[C_A01], k[C_A11], k[C_A12]},
-                         {k[C_A02], k[C_A12], k[C_A22]}};
+    const i64 A[3][3] = {{ks[C_A00], ks[C_A01], ks[C_A02]},
+                         {ks[C_A01], ks[C_A11], ks[C_A12]},
+                         {ks[C_A02], ks[C_A12], ks[C_A22]}};
     std::array<i64, 3> g;
     for (int i = 0; i < 3; ++i) {
-        i128 s = i128(k[C_P0 + i]) << F;
-        for (int j = 0; j < 3; ++j) s += i128(A[i][j]) * p[j];
-        g[i] = i64(rshift_round(s, FC));
+        i128 s = i128(ks[C_P0 + i]) << PF;
+        for (int j = 0; j < 3; ++j) s += i128(A[i][j]) * ps[j];
+        g[i] = i64(rshift_round(s, SF));
     }
-    std::array<i64, 3> n = unit_fx(g, F, vec16_sqrt_bits(F));
+    std::array<i64, 3> n = unit_fx(g, SF, kShadeSqrtStages);
     i128 nd = 0;
-    for (int i = 0; i < 3; ++i) nd += i128(n[i]) * ray.d[i];
+    for (int i = 0; i < 3; ++i) nd += i128(n[i]) * ds[i];
     if (nd > 0)
         for (i64& v : n) v = -v;
 
     // Diffuse and phong from every light (no shadows yet).
     std::array<i64, 3> diffuse{0, 0, 0}, spec{0, 0, 0};
-    const i64 dn = dot_round(ray.d, n, F);
+    const i64 dn = dot_round(ds, n, SF);
     std::array<i64, 3> refl;   // the reflected view direction R = d - 2 (d.n) n
-    for (int i = 0; i < 3; ++i) refl[i] = ray.d[i] - i64(rshift_round(i128(2 * dn) * n[i], F));
+    for (int i = 0; i < 3; ++i) refl[i] = ds[i] - i64(rshift_round(i128(2 * dn) * n[i], SF));
     for (const LightInfo& li : cs.lights) {
         std::array<i64, 3> lv;
-        for (int i = 0; i < 3; ++i) lv[i] = li.pos_fx[i] - p[i];
-        const std::array<i64, 3> l = unit_fx(lv, F, vec16_sqrt_bits(F));
-        const i64 ndl = dot_round(n, l, F);
+        for (int i = 0; i < 3; ++i) lv[i] = align(li.pos_fx[i], F, PF) - ps[i];
+        const std::array<i64, 3> l = unit_fx(lv, SF, kShadeSqrtStages);
+        const i64 ndl = dot_round(n, l, SF);
         if (ndl > 0)
-            for (int c = 0; c < 3; ++c) diffuse[c] += i64(rshift_round(i128(li.color_fx[c]) * ndl, F));
+            for (int c = 0; c < 3; ++c) diffuse[c] += i64(rshift_round(i128(li.color_fx[c]) * ndl, SF));
         if (m.phong > 0) {
-            const i64 cosr = dot_round(refl, l, F);
+            const i64 cosr = dot_round(refl, l, SF);
             if (cosr > 0) {
-                const i64 pw = pow_fx(cosr, m.phong_size, F);
-                const i64 ph = i64(rshift_round(i128(m.phong) * pw, F));   // CF bits
+                const i64 pw = pow_fx(cosr, m.phong_size, SF);
+                const i64 ph = i64(rshift_round(i128(m.phong) * pw, SF));   // CF bits
                 for (int c = 0; c < 3; ++c) spec[c] += i64(rshift_round(i128(li.color_fx[c]) * ph, CF));
             }
         }

@@ -17,6 +17,16 @@ namespace csgrt {
 
 enum class Arith { Fixed, Double };
 
+// Shading works at fixed widths whatever the coordinate width B
+// (docs/numerics.md section 6): positions and gradients with kShadePosFrac
+// fraction bits (|.| < 16, 17-bit signed), unit vectors with kShadeFrac
+// (|.| < 1, 16-bit signed), so that every shading product fits an 18x18
+// multiplier.
+constexpr int kShadePosFrac = 12;
+constexpr int kShadeFrac = 15;
+// sum of squares of a vector with |v_i| < 16 at 12 fraction bits < 2^34
+constexpr int kShadeSqrtStages = 17;
+
 struct RenderOptions {
     Arith arith = Arith::Fixed;
     TiePolicy ties = TiePolicy::Paper;
