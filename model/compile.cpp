@@ -121,6 +121,7 @@ class Flattener {
     glm::dvec3 box_min{std::numeric_limits<double>::infinity()};
     glm::dvec3 box_max{-std::numeric_limits<double>::infinity()};
     std::vector<std::pair<const Object*, glm::dmat4>> finite;   // for the resolution check
+    int max_leaves = kMaxLeaves;
 
     void add_point(const glm::dvec3& p) {
         box_min = glm::min(box_min, p);
@@ -169,9 +170,10 @@ class Flattener {
     }
 
     void leaf(const Object& o, const QuadricD& world, int mat, const std::string& what) {
-        if (int(leaves.size()) >= kMaxLeaves)
-            throw SceneError(o.pos, o.keyword + ": the scene needs more than " + std::to_string(kMaxLeaves) +
-                                        " leaf half-spaces, the hardware limit (MAX_LEAVES)");
+        if (int(leaves.size()) >= max_leaves)
+            throw SceneError(o.pos, o.keyword + ": the scene needs more than " + std::to_string(max_leaves) +
+                                        " leaf half-spaces, the hardware limit (MAX_LEAVES = " +
+                                        std::to_string(max_leaves) + ")");
         program.push_back({Op::LEAF, uint16_t(leaves.size())});
         leaves.push_back({world, mat, o.pos, what});
     }
@@ -319,17 +321,11 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
 
     // 1. Flatten the tree; the top level is an implicit union.
     Flattener fl;
+    fl.max_leaves = opt.max_leaves;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         fl.object(scene.objects[i], glm::dmat4(1.0), Pigment{}, Finish{}, Interior{});
         if (i > 0) fl.program.push_back({Op::ADD, 0});
     }
-    cs.stack_depth = stack_depth(fl.program);
-    if (cs.stack_depth > kMaxStackDepth)
-        throw SceneError(scene_pos, "the CSG tree needs a classifier stack of " + std::to_string(cs.stack_depth) +
-                                        " entries, more than the hardware limit of " +
-                                        std::to_string(kMaxStackDepth) +
-                                        " (MAX_STACK); nest groups less deeply");
-
     // 2. The frame: camera, lights and finite primitives into a cube of half
     //    extent kSceneHalfExtent around the origin.
     fl.add_point(scene.camera.location);
@@ -389,8 +385,21 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
         cs.leaves.push_back(li);
         cs.leaf_material.push_back(uint8_t(pl.material));
     }
-    cs.program = fl.program;
+    // The balanced tree is the one model and RTL classify with.
+    cs.program = balance_program(fl.program);
     cs.class_tree = ClassTree(cs.program);
+    cs.stack_depth = stack_depth(cs.program);
+    if (cs.stack_depth > kMaxStackDepth)
+        throw SceneError(scene_pos, "the CSG tree needs a classifier stack of " + std::to_string(cs.stack_depth) +
+                                        " entries, more than the limit of " + std::to_string(kMaxStackDepth) +
+                                        " (MAX_STACK); nest groups less deeply");
+    if (opt.tree_height > 0) {
+        try {
+            cs.layout = layout_tree(cs.program, opt.tree_height, int(cs.leaves.size()));
+        } catch (const std::runtime_error& e) {
+            throw SceneError(scene_pos, std::string(e.what()) + "; simplify the scene or raise TREE_HEIGHT");
+        }
+    }
 
     // 5. Materials.
     cs.materials = fl.materials;

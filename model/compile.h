@@ -11,6 +11,7 @@
 #include "classify.h"
 #include "fixed.h"
 #include "scene.h"
+#include "tree_layout.h"
 
 #include <glm/glm.hpp>
 
@@ -89,6 +90,7 @@ struct CompiledScene {
     std::vector<Instr> program;
     std::vector<uint8_t> leaf_material;    // leaves[i].material, for classify()
     ClassTree class_tree;                  // the program as a tree (set with the program)
+    TreeLayout layout;                     // the tree as the RTL evaluates it (when requested)
     int max_trace_level = 5;
     int stack_depth = 0;
     bool identical_coefs(int leaf_a, int leaf_b) const { return leaves[leaf_a].coef == leaves[leaf_b].coef; }
@@ -98,7 +100,13 @@ struct CompileOptions {
     int bits = 24;
     int width = 320;
     int height = 240;
+    int max_leaves = kMaxLeaves;   // the target's MAX_LEAVES
+    int tree_height = 0;           // the target's TREE_HEIGHT; 0: no layout (model only)
 };
+
+// Defaults of the RTL configuration (csgrt_top's parameters).
+constexpr int kRtlMaxLeaves = 64;
+constexpr int kRtlTreeHeight = 8;
 
 // Throws SceneError naming the object and the limit for anything that does
 // not fit: range, resolution, hardware limits.

@@ -26,6 +26,8 @@ const char* kUsage =
     "  --arith fixed|double       fixed-point model or double reference (default fixed)\n"
     "  --ties paper|regular       tie policy at equal t (default paper)\n"
     "  --threads N                worker threads (default: all cores)\n"
+    "  --max-leaves N             hardware limit on leaves (compile: default 64, the RTL's)\n"
+    "  --tree-height H            hardware classification-tree height (compile: default 8)\n"
     "  --quiet                    no progress line\n";
 
 struct Args {
@@ -62,6 +64,8 @@ Args parse_args(int argc, char** argv) {
         else if (s == "--height") a.copt.height = int_arg(s, value());
         else if (s == "--bits") a.copt.bits = int_arg(s, value());
         else if (s == "--threads") a.ropt.threads = int_arg(s, value());
+        else if (s == "--max-leaves") a.copt.max_leaves = int_arg(s, value());
+        else if (s == "--tree-height") a.copt.tree_height = int_arg(s, value());
         else if (s == "--quiet") a.quiet = true;
         else if (s == "--arith") {
             const std::string v = value();
@@ -99,7 +103,12 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, stdout);
         return 0;
     }
-    const Args a = parse_args(argc, argv);
+    Args a = parse_args(argc, argv);
+    if (a.cmd == "compile") {
+        // a scene image is for the RTL: check its limits and lay out its tree
+        if (a.copt.tree_height == 0) a.copt.tree_height = kRtlTreeHeight;
+        if (a.copt.max_leaves == kMaxLeaves) a.copt.max_leaves = kRtlMaxLeaves;
+    }
     try {
         const Scene scene = parse_scene_file(a.scene);
         const CompiledScene cs = compile_scene(scene, a.copt);

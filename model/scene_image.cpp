@@ -66,6 +66,12 @@ std::vector<uint32_t> encode_scene_image(const CompiledScene& cs) {
     }
     w[H_OFF_PROGRAM] = uint32_t(w.size());
     for (const Instr& ins : cs.program) w.push_back(uint32_t(ins.op) | (uint32_t(ins.arg) << 8));
+    w[H_OFF_TREE] = uint32_t(w.size());
+    w.push_back(uint32_t(cs.layout.height));
+    if (cs.layout.height > 0) {
+        for (LayoutOp op : cs.layout.node_op) w.push_back(uint32_t(op));
+        for (int slot : cs.layout.leaf_slot) w.push_back(uint32_t(slot));
+    }
     w[H_TOTAL] = uint32_t(w.size());
     return w;
 }
@@ -117,6 +123,14 @@ CompiledScene decode_scene_image(const std::vector<uint32_t>& w) {
         cs.program.push_back({Op(v & 0xff), uint16_t(v >> 8)});
     }
     cs.class_tree = ClassTree(cs.program);
+    i = w[H_OFF_TREE];
+    cs.layout.height = int(w.at(i++));
+    if (cs.layout.height > 0) {
+        cs.layout.node_op.resize(size_t(1) << cs.layout.height);
+        for (LayoutOp& op : cs.layout.node_op) op = LayoutOp(w.at(i++));
+        cs.layout.leaf_slot.resize(cs.leaves.size());
+        for (int& slot : cs.layout.leaf_slot) slot = int(w.at(i++));
+    }
     return cs;
 }
 

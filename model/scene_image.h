@@ -18,7 +18,7 @@ constexpr uint32_t kSceneVersion = 1;
 enum SceneHeader {
     H_MAGIC, H_VERSION, H_BITS, H_SIZE /* width | height << 16 */, H_LEAVES, H_PROGRAM, H_MATERIALS,
     H_LIGHTS, H_MAX_TRACE, H_STACK, H_OFF_CAMERA, H_OFF_LIGHTS, H_OFF_MATERIALS, H_OFF_LEAVES,
-    H_OFF_PROGRAM, H_TOTAL, kHeaderWords
+    H_OFF_PROGRAM, H_OFF_TREE, H_TOTAL, kHeaderWords
 };
 constexpr int kCameraWords = 3 + 3 * 3 * 2 + 3;   // origin, base/dx/dy (2 words each), background
 constexpr int kLightWords = 6;                    // position, colour
