@@ -17,7 +17,7 @@ MODEL_OBJ  := $(MODEL_SRC:model/%.cpp=$(BUILD)/model/%.o)
 TEST_SRC   := $(wildcard model/*_test.cpp)
 TEST_OBJ   := $(TEST_SRC:model/%.cpp=$(BUILD)/model/%.o)
 
-.PHONY: all help deps model render test bench-model clean
+.PHONY: all help deps model render test bench-model lint clean
 all: model
 
 # Parameters of the render and simulation targets.
@@ -35,6 +35,7 @@ help:
 	@echo "             render with the golden model to out/model/<scene>.png"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
 	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
+	@echo "make lint    verilator --lint-only -Wall and yosys synthesis of every RTL module"
 
 deps:
 	@tools/deps.sh
@@ -55,13 +56,17 @@ $(BUILD)/csgrt: $(BUILD)/model/main.o $(BUILD)/libcsgrt.a
 $(BUILD)/model_tests: $(TEST_OBJ) $(BUILD)/libcsgrt.a
 	$(CXX) $(CXXFLAGS) $^ $(PKG_LIBS) -lgtest -lgtest_main -o $@
 
-test: deps $(BUILD)/csgrt $(BUILD)/model_tests
+include tb/tb.mk
+
+test: deps $(BUILD)/csgrt $(BUILD)/model_tests $(TB_BINS)
 	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS)
 
 render: model
 	@mkdir -p out/model
 	$(BUILD)/csgrt render $(SCENE) -o out/model/$(scene_name).png --bits $(BITS) --ties $(TIES) \
 	    --width $(WIDTH) --height $(HEIGHT)
+
+lint: deps lint-rtl
 
 bench-model: model
 	@tools/bench_model.sh

@@ -73,6 +73,10 @@ LeafEvents<i64> intersect_fx(const Formats& fmt, const std::array<i64, kNumCoefs
     le.a = a;
     le.b = b;
     le.c = c;
+    // the widths of the RTL's a, b, c registers (numerics.md section 3.1)
+    if (a >= (i64(4) << F) || a <= -(i64(4) << F) || b >= (i64(32) << F) || b <= -(i64(32) << F) ||
+        c >= (i64(256) << F) || c <= -(i64(256) << F))
+        throw std::logic_error("intersect_fx: coefficient along the ray outside its bound");
 
     const int quot_bits = F + 1;   // |t| < 2
     if (a == 0) {

@@ -1,0 +1,50 @@
+`default_nettype none
+// csgrt_delay — a valid bit and a data word delayed by STAGES registers, all
+// moving on one stage enable; keeps side data in step with a csgrt_mul.
+//
+// Latency: STAGES clocks, counted in enabled clocks. Handshake: none; ce_i
+// low holds every register (the enclosing pipeline's global stall).
+module csgrt_delay #(
+    parameter WIDTH  = 8,   // data width (>= 1)
+    parameter STAGES = 2    // number of registers (>= 1)
+) (
+    input  wire             clk_i,
+    input  wire             rst_ni,   // synchronous, active low (valid bits only)
+    input  wire             ce_i,     // stage enable (low = stall)
+    input  wire             valid_i,
+    input  wire [WIDTH-1:0] data_i,
+    output wire             valid_o,
+    output wire [WIDTH-1:0] data_o
+);
+
+    reg [STAGES-1:0]       valid_q;
+    reg [STAGES*WIDTH-1:0] data_q;
+
+    generate
+        if (STAGES == 1) begin : g_one
+            always @(posedge clk_i) begin
+                if (!rst_ni) valid_q <= 1'b0;
+                else if (ce_i) valid_q <= valid_i;
+                if (ce_i) data_q <= data_i;
+            end
+        end else begin : g_many
+            always @(posedge clk_i) begin
+                if (!rst_ni) valid_q <= {STAGES{1'b0}};
+                else if (ce_i) valid_q <= {valid_q[STAGES-2:0], valid_i};
+                if (ce_i) data_q <= {data_q[(STAGES-1)*WIDTH-1:0], data_i};
+            end
+        end
+        if (WIDTH < 1 || STAGES < 1) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_delay needs WIDTH >= 1, STAGES >= 1");
+                $finish;
+            end
+        end
+    endgenerate
+
+    assign valid_o = valid_q[STAGES-1];
+    assign data_o  = data_q[(STAGES-1)*WIDTH +: WIDTH];
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,157 @@
+`default_nettype none
+// csgrt_div_core — signed division truncating toward zero with the quotient
+// magnitude limited to QUOT_BITS bits, bit for bit sdiv_trunc() of
+// model/fixed.h: |q| = udiv_bitwise(|n|, |d|, QUOT_BITS) (restoring, one
+// quotient bit per stage, most significant first) unless div_overflows(),
+// i.e. (|n| >> QUOT_BITS) >= |d|, which raises ovf_o (the caller saturates;
+// quot_o is then meaningless). d = 0 always reports overflow. neg_o is
+// (n < 0) != (d < 0), the sign of the quotient and of a saturated result.
+//
+// Stage 0 (input register): |n|, |d|, neg, ovf, rem = (|n| >> QUOT_BITS).
+// Stage 1+k (quotient bit i = QUOT_BITS-1-k):
+//   rem = (rem << 1) | |n|[i];  q = q << 1;  if (rem >= |d|) { rem -= |d|; q |= 1; }
+// Example NUM_WIDTH = 4, DEN_WIDTH = 3, QUOT_BITS = 2, n = -7, d = 3:
+// |n| = 0111, rem = 01, bit 1: rem = 3 >= 3 -> 0, q = 1; bit 0: rem = 1, q = 10;
+// quot_o = 2, neg_o = 1 (the result is -2).
+//
+// Latency: QUOT_BITS + 1 clocks, counted in enabled clocks. Handshake: none;
+// a global stage enable ce_i (low = hold) and a valid bit shifted alongside.
+// csgrt_div adds the sign and valid/ready.
+module csgrt_div_core #(
+    parameter NUM_WIDTH  = 16,   // signed numerator width (> QUOT_BITS)
+    parameter DEN_WIDTH  = 8,    // signed denominator width (>= 2)
+    parameter QUOT_BITS  = 8,    // quotient magnitude bits = iteration stages (>= 2)
+    parameter USER_WIDTH = 1     // sideband carried alongside (>= 1)
+) (
+    input  wire                  clk_i,
+    input  wire                  rst_ni,   // synchronous, active low (valid bits only)
+    input  wire                  ce_i,     // stage enable (low = stall)
+    input  wire                  valid_i,
+    input  wire [NUM_WIDTH-1:0]  num_i,    // two's complement
+    input  wire [DEN_WIDTH-1:0]  den_i,    // two's complement
+    input  wire [USER_WIDTH-1:0] user_i,
+    output wire                  valid_o,
+    output wire [QUOT_BITS-1:0]  quot_o,   // |n| / |d| rounded down (valid when !ovf_o)
+    output wire                  neg_o,    // (n < 0) != (d < 0)
+    output wire                  ovf_o,    // |n / d| >= 2^QUOT_BITS (or d = 0)
+    output wire [USER_WIDTH-1:0] user_o
+);
+
+    localparam NW = NUM_WIDTH;
+    localparam DW = DEN_WIDTH;
+    localparam QB = QUOT_BITS;
+    localparam UW = USER_WIDTH;
+    localparam XW = NW + DW;   // width holding both magnitudes for the compare
+
+    // ---- stage 0: magnitudes, sign, overflow check ------------------------
+    wire [NW-1:0] un = num_i[NW-1] ? (~num_i + {{(NW-1){1'b0}}, 1'b1}) : num_i;
+    wire [DW-1:0] ud = den_i[DW-1] ? (~den_i + {{(DW-1){1'b0}}, 1'b1}) : den_i;
+    wire [XW-1:0] un_x = {{DW{1'b0}}, un};
+    wire [XW-1:0] ud_x = {{NW{1'b0}}, ud};
+    wire [XW-1:0] hi_x = un_x >> QB;   // the bits above the quotient window
+    wire          ovf0 = (hi_x >= ud_x);
+    // without overflow hi_x < |d| < 2^DW: the bits above DW are only looked
+    // at by the overflow check
+    wire [XW-DW-1:0] unused_hi = hi_x[XW-1:DW];
+
+    reg          s0_valid_q;
+    reg [DW-1:0] s0_rem_q, s0_ud_q;
+    reg [QB-1:0] s0_lo_q;
+    reg          s0_neg_q, s0_ovf_q;
+    reg [UW-1:0] s0_user_q;
+
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            s0_valid_q <= 1'b0;
+        end else if (ce_i) begin
+            s0_valid_q <= valid_i;
+        end
+        if (ce_i) begin
+            s0_rem_q  <= hi_x[DW-1:0];
+            s0_ud_q   <= ud;
+            s0_lo_q   <= un[QB-1:0];
+            s0_neg_q  <= num_i[NW-1] ^ den_i[DW-1];
+            s0_ovf_q  <= ovf0;
+            s0_user_q <= user_i;
+        end
+    end
+
+    // ---- stages 1..QB: one quotient bit each ------------------------------
+    // Side information (|d|, the low numerator bits, neg, ovf, user) rides
+    // along in one flat word per stage.
+    localparam SW = DW + QB + 2 + UW;   // side word width
+
+    reg  [QB-1:0]    valid_q;
+    wire [QB-1:0]    valid_d;
+    reg  [QB*DW-1:0] rem_q;
+    wire [QB*DW-1:0] rem_d;
+    reg  [QB*QB-1:0] quot_q;
+    wire [QB*QB-1:0] quot_d;
+    reg  [QB*SW-1:0] side_q;
+    wire [QB*SW-1:0] side_d;
+
+    wire [SW-1:0]    side0 = {s0_user_q, s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
+    wire [QB-1:0]    valid_s = {valid_q[QB-2:0], s0_valid_q};
+    wire [QB*DW-1:0] rem_s   = {rem_q[(QB-1)*DW-1:0], s0_rem_q};
+    wire [QB*QB-1:0] quot_s  = {quot_q[(QB-1)*QB-1:0], {QB{1'b0}}};
+    wire [QB*SW-1:0] side_s  = {side_q[(QB-1)*SW-1:0], side0};
+
+    genvar k;
+    generate
+        for (k = 0; k < QB; k = k + 1) begin : g_stage
+            localparam I = QB - 1 - k;   // quotient bit found by this stage
+            wire [DW-1:0] rem_in  = rem_s[k*DW +: DW];
+            wire [QB-1:0] quot_in = quot_s[k*QB +: QB];
+            wire [SW-1:0] side_in = side_s[k*SW +: SW];
+            wire [DW-1:0] ud_in   = side_in[DW-1:0];
+            wire [QB-1:0] lo_in   = side_in[DW +: QB];
+            wire [DW:0]   rem_sh  = {rem_in, lo_in[I]};
+            wire          take    = (rem_sh >= {1'b0, ud_in});
+            wire [DW:0]   rem_nx  = take ? rem_sh - {1'b0, ud_in} : rem_sh;
+            // without overflow rem_nx < |d| < 2^DW: its top bit is zero
+            wire          unused_rem_top = rem_nx[DW];
+            // quot_in < 2^k <= 2^(QB-1): its top bit is zero
+            wire          unused_quot_top = quot_in[QB-1];
+
+            assign valid_d[k]          = valid_s[k];
+            assign rem_d[k*DW +: DW]   = rem_nx[DW-1:0];
+            assign quot_d[k*QB +: QB]  = {quot_in[QB-2:0], take};
+            assign side_d[k*SW +: SW]  = side_in;
+        end
+    endgenerate
+
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            valid_q <= {QB{1'b0}};
+        end else if (ce_i) begin
+            valid_q <= valid_d;
+        end
+        if (ce_i) begin
+            rem_q  <= rem_d;
+            quot_q <= quot_d;
+            side_q <= side_d;
+        end
+    end
+
+    wire [SW-1:0] side_last = side_q[(QB-1)*SW +: SW];
+    assign valid_o = valid_q[QB-1];
+    assign quot_o  = quot_q[(QB-1)*QB +: QB];
+    assign neg_o   = side_last[DW+QB];
+    assign ovf_o   = side_last[DW+QB+1];
+    assign user_o  = side_last[DW+QB+2 +: UW];
+
+    // the last stage's remainder, |d| and numerator bits are not needed
+    wire unused_last = ^{rem_q[(QB-1)*DW +: DW], side_last[DW+QB-1:0]};
+
+    generate
+        if (NUM_WIDTH <= QUOT_BITS || DEN_WIDTH < 2 || QUOT_BITS < 2 || USER_WIDTH < 1) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_div_core needs NUM_WIDTH > QUOT_BITS >= 2, DEN_WIDTH >= 2, USER_WIDTH >= 1");
+                $finish;
+            end
+        end
+    endgenerate
+
+endmodule
+
+`default_nettype wire

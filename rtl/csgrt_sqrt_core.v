@@ -1,0 +1,119 @@
+`default_nettype none
+// csgrt_sqrt_core — integer square root root = floor(sqrt(n)), one result
+// bit per stage, most significant first: the restoring digit-by-digit method
+// of isqrt_bitwise() in model/fixed.h, stage k computing result bit
+// RESULT_BITS-1-k. Stage k (bit i = RESULT_BITS-1-k):
+//   rem   = (rem << 2) | n[2i+1:2i]      bring down two bits of n
+//   trial = (root << 2) | 1              2*root+1 at this scale
+//   root  = root << 1; if (rem >= trial) { rem -= trial; root |= 1; }
+// Example RESULT_BITS = 2, n = 4'b1010 (10): stage 0: rem = 2, trial = 1,
+// rem = 1, root = 1; stage 1: rem = 6, trial = 5, rem = 1, root = 3.
+//
+// Latency: RESULT_BITS clocks (one register per stage), counted in enabled
+// clocks. Handshake: none; a global stage enable ce_i (low = every register
+// holds) and a valid bit shifted alongside. csgrt_sqrt adds valid/ready.
+module csgrt_sqrt_core #(
+    parameter RESULT_BITS = 8,   // result bits = pipeline stages (>= 2)
+    parameter USER_WIDTH  = 1    // sideband carried alongside (>= 1)
+) (
+    input  wire                     clk_i,
+    input  wire                     rst_ni,    // synchronous, active low (valid bits only)
+    input  wire                     ce_i,      // stage enable (low = stall)
+    input  wire                     valid_i,
+    input  wire [2*RESULT_BITS-1:0] n_i,       // radicand, unsigned
+    input  wire [USER_WIDTH-1:0]    user_i,
+    output wire                     valid_o,
+    output wire [RESULT_BITS-1:0]   root_o,    // floor(sqrt(n_i))
+    output wire [USER_WIDTH-1:0]    user_o
+);
+
+    localparam R  = RESULT_BITS;
+    localparam NW = 2 * R;   // radicand width
+    // Remainder width: after j result bits rem <= 2*root < 2^(j+1), so the
+    // shifted remainder 4*rem+3 < 2^(R+2) fits in R+2 bits at every stage.
+    localparam RW = R + 2;
+
+    // Stage k reads the inputs (k = 0) or slice k-1 of the *_q registers
+    // and writes slice k of *_d / *_q.
+    reg  [R-1:0]          valid_q;
+    wire [R-1:0]          valid_d;
+    reg  [R*RW-1:0]       rem_q;
+    wire [R*RW-1:0]       rem_d;
+    reg  [R*R-1:0]        root_q;
+    wire [R*R-1:0]        root_d;
+    reg  [R*NW-1:0]       n_q;
+    wire [R*NW-1:0]       n_d;
+    reg  [R*USER_WIDTH-1:0] user_q;
+    wire [R*USER_WIDTH-1:0] user_d;
+
+    genvar k;
+    generate
+        for (k = 0; k < R; k = k + 1) begin : g_stage
+            localparam I = R - 1 - k;   // result bit found by this stage
+            wire [RW-1:0] rem_in;
+            wire [R-1:0]  root_in;
+            wire [NW-1:0] n_in;
+            wire [USER_WIDTH-1:0] user_in;
+            wire          valid_in;
+            if (k == 0) begin : g_in
+                assign rem_in   = {RW{1'b0}};
+                assign root_in  = {R{1'b0}};
+                assign n_in     = n_i;
+                assign user_in  = user_i;
+                assign valid_in = valid_i;
+            end else begin : g_in
+                assign rem_in   = rem_q[(k-1)*RW +: RW];
+                assign root_in  = root_q[(k-1)*R +: R];
+                assign n_in     = n_q[(k-1)*NW +: NW];
+                assign user_in  = user_q[(k-1)*USER_WIDTH +: USER_WIDTH];
+                assign valid_in = valid_q[k-1];
+            end
+            // rem_in < 2^R: its two top bits are always zero
+            wire [1:0]    unused_rem_top = rem_in[RW-1:RW-2];
+            wire [RW-1:0] rem_sh = {rem_in[RW-3:0], n_in[2*I+1:2*I]};
+            wire [RW-1:0] trial  = {root_in, 2'b01};
+            wire          take   = (rem_sh >= trial);
+            // root_in < 2^k <= 2^(R-1): its top bit is always zero
+            wire          unused_root_top = root_in[R-1];
+
+            assign valid_d[k]                    = valid_in;
+            assign rem_d[k*RW +: RW]             = take ? rem_sh - trial : rem_sh;
+            assign root_d[k*R +: R]              = {root_in[R-2:0], take};
+            assign n_d[k*NW +: NW]               = n_in;
+            assign user_d[k*USER_WIDTH +: USER_WIDTH] = user_in;
+        end
+    endgenerate
+
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            valid_q <= {R{1'b0}};
+        end else if (ce_i) begin
+            valid_q <= valid_d;
+        end
+        if (ce_i) begin
+            rem_q  <= rem_d;
+            root_q <= root_d;
+            n_q    <= n_d;
+            user_q <= user_d;
+        end
+    end
+
+    assign valid_o = valid_q[R-1];
+    assign root_o  = root_q[(R-1)*R +: R];
+    assign user_o  = user_q[(R-1)*USER_WIDTH +: USER_WIDTH];
+
+    // the last stage's remainder and radicand copy are not needed
+    wire unused_last = ^{rem_q[(R-1)*RW +: RW], n_q[(R-1)*NW +: NW]};
+
+    generate
+        if (RESULT_BITS < 2 || USER_WIDTH < 1) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_sqrt_core needs RESULT_BITS >= 2, USER_WIDTH >= 1");
+                $finish;
+            end
+        end
+    endgenerate
+
+endmodule
+
+`default_nettype wire

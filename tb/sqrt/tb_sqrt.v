@@ -1,0 +1,54 @@
+`default_nettype none
+// tb_sqrt — Verilator top for tb_sqrt.cpp: csgrt_sqrt at RESULT_BITS 6 and 10
+// (exhaustive) and 27 (F+6 of the 24-bit configuration), one clock each so
+// that only the instance under test is evaluated.
+module tb_sqrt (
+    input  wire              r6_clk_i,
+    input  wire              r6_rst_ni,
+    input  wire              r6_valid_i,
+    output wire              r6_ready_o,
+    input  wire [11:0]  r6_n_i,
+    input  wire [15:0]       r6_user_i,
+    output wire              r6_valid_o,
+    input  wire              r6_ready_i,
+    output wire [5:0]    r6_root_o,
+    output wire [15:0]       r6_user_o,
+    input  wire              r10_clk_i,
+    input  wire              r10_rst_ni,
+    input  wire              r10_valid_i,
+    output wire              r10_ready_o,
+    input  wire [19:0]  r10_n_i,
+    input  wire [15:0]       r10_user_i,
+    output wire              r10_valid_o,
+    input  wire              r10_ready_i,
+    output wire [9:0]    r10_root_o,
+    output wire [15:0]       r10_user_o,
+    input  wire              r27_clk_i,
+    input  wire              r27_rst_ni,
+    input  wire              r27_valid_i,
+    output wire              r27_ready_o,
+    input  wire [53:0]  r27_n_i,
+    input  wire [15:0]       r27_user_i,
+    output wire              r27_valid_o,
+    input  wire              r27_ready_i,
+    output wire [26:0]    r27_root_o,
+    output wire [15:0]       r27_user_o
+);
+
+    csgrt_sqrt #(.RESULT_BITS(6), .USER_WIDTH(16)) u_r6 (
+        .clk_i(r6_clk_i), .rst_ni(r6_rst_ni),
+        .valid_i(r6_valid_i), .ready_o(r6_ready_o), .n_i(r6_n_i), .user_i(r6_user_i),
+        .valid_o(r6_valid_o), .ready_i(r6_ready_i), .root_o(r6_root_o), .user_o(r6_user_o));
+
+    csgrt_sqrt #(.RESULT_BITS(10), .USER_WIDTH(16)) u_r10 (
+        .clk_i(r10_clk_i), .rst_ni(r10_rst_ni),
+        .valid_i(r10_valid_i), .ready_o(r10_ready_o), .n_i(r10_n_i), .user_i(r10_user_i),
+        .valid_o(r10_valid_o), .ready_i(r10_ready_i), .root_o(r10_root_o), .user_o(r10_user_o));
+
+    csgrt_sqrt #(.RESULT_BITS(27), .USER_WIDTH(16)) u_r27 (
+        .clk_i(r27_clk_i), .rst_ni(r27_rst_ni),
+        .valid_i(r27_valid_i), .ready_o(r27_ready_o), .n_i(r27_n_i), .user_i(r27_user_i),
+        .valid_o(r27_valid_o), .ready_i(r27_ready_i), .root_o(r27_root_o), .user_o(r27_user_o));
+endmodule
+
+`default_nettype wire
