@@ -1,0 +1,290 @@
+`default_nettype none
+// csgrt_camera — primary ray generator, bit for bit camera_ray_fx() of
+// model/render.cpp (docs/numerics.md section 2): one ray per pixel in raster
+// order (x fastest, row 0 first) after a start pulse.
+//
+// Per pixel, with B = BITS, F = B-3, CF = F+12 (cam_frac):
+//   v_i  = base_i + x dx_i + y dy_i        exact, CF fraction bits, |v_i| < 8
+//   vr_i = rnd(v_i, 8)                     F+4 fraction bits, VW = F+8 bits signed
+//   L    = isqrt(sum vr_i^2, F+8) + 1      sum < 2^(2F+16)
+//   d_i  = div(vr_i << F, L, F+1)          truncated, never overflows, |d_i| < 2^F
+// v is formed incrementally (v += dx along a row, row start += dy), exact in
+// CW = F+16 bits modulo 2^CW: only the low CW bits of base/dx/dy matter,
+// because every v fits CW bits signed (|v| < 8).
+//
+// Pipeline (one global enable, the output skid buffer's registered ready):
+//   G   (1)    generator register: x, y, v, last
+//   R   (1)    vr = rnd(v, 8)
+//   M   (2)    vr_i^2, three csgrt_mul (VW x VW)
+//   S   (1)    sum of squares
+//   Q   (F+8)  csgrt_sqrt_core
+//   P   (1)    L = root + 1, numerators vr << F
+//   D   (F+2)  three csgrt_div_core in parallel
+//   skid(1)    csgrt_skid
+// Latency from a generated ray to its output: 2F+17 clocks (BITS 12: 35,
+// 24: 59); the first ray appears 2F+18 clocks after start. Throughput: one
+// ray per clock. Multipliers: 3 (VW x VW, VW = F+8 = B+5).
+// Handshake: m_valid_o/m_ready_i; a ray moves when both are high at a
+// rising edge. Back-pressure stalls the whole pipeline and the generator.
+// done_o pulses for one clock after the frame's last ray has been accepted;
+// busy_o is high from start until then. A start while busy restarts the
+// frame (rays already in the pipeline still come out).
+// Config (base/dx/dy/origin/width/height) is sampled at start (dx, dy,
+// origin, width, height are kept for the frame). width/height are 12 bits:
+// 1..4095, and 0 stands for 4096 (the counters wrap).
+module csgrt_camera #(
+    parameter BITS = 24   // coordinate width B (12..32)
+) (
+    input  wire             clk_i,
+    input  wire             rst_ni,     // synchronous, active low
+    // configuration (CameraInfo of model/compile.h)
+    input  wire [3*BITS-1:0] origin_i,  // x, y, z, F fraction bits (x in the low bits)
+    input  wire [3*64-1:0]  base_i,     // F+12 fraction bits, two's complement
+    input  wire [3*64-1:0]  dx_i,
+    input  wire [3*64-1:0]  dy_i,
+    input  wire [11:0]      width_i,
+    input  wire [11:0]      height_i,
+    input  wire             start_i,    // one-clock pulse: begin a frame
+    output wire             busy_o,
+    output reg              done_o,     // one-clock pulse: last ray accepted
+    // ray stream
+    output wire             m_valid_o,
+    input  wire             m_ready_i,
+    output wire [11:0]      m_x_o,
+    output wire [11:0]      m_y_o,
+    output wire [3*BITS-1:0] m_o_o,     // origin, F fraction bits
+    output wire [3*BITS-1:0] m_d_o,     // unit direction, F fraction bits
+    output wire             m_last_o    // the frame's last ray
+);
+
+    localparam B   = BITS;
+    localparam F   = B - 3;
+    localparam CW  = F + 16;      // v: CF = F+12 fraction bits, |v| < 8
+    localparam VW  = F + 8;       // vr: F+4 fraction bits, |vr| < 8
+    localparam SQ  = F + 8;       // square-root stages: sum vr^2 < 2^(2F+16)
+    localparam LW  = SQ + 2;      // L = root + 1 <= 2^SQ, signed
+    localparam NW  = VW + F;      // numerator vr << F
+    localparam QB  = F + 1;       // quotient bits
+    localparam PW  = 2 * VW;      // square width
+    localparam SW  = 2 * SQ;      // sum of squares (< 2^(2F+16))
+
+    wire en;   // global stage enable = output skid ready
+
+    // ---- generator -----------------------------------------------------------
+    reg [3*CW-1:0] dx_q, dy_q;   // component k at k*CW
+    reg [3*CW-1:0] row_q;        // base + y dy
+    reg [3*CW-1:0] v_q;          // base + x dx + y dy
+    reg [3*B-1:0] origin_q;
+    reg [11:0]    wm1_q, hm1_q;  // width-1, height-1 (mod 4096)
+    reg [11:0]    x_q, y_q;
+    reg           active_q;      // rays left to generate
+    reg           busy_q;
+
+    wire gen_last = (x_q == wm1_q) && (y_q == hm1_q);
+    wire gen_fire = en && active_q;
+
+    // G: the generator's output register
+    reg          g_valid_q, g_last_q;
+    reg [11:0]   g_x_q, g_y_q;
+    reg [3*CW-1:0] g_v_q;
+
+    integer k;
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            active_q  <= 1'b0;
+            g_valid_q <= 1'b0;
+        end else begin
+            if (start_i) active_q <= 1'b1;
+            else if (gen_fire && gen_last) active_q <= 1'b0;
+            if (en) g_valid_q <= active_q && !start_i;
+        end
+        if (start_i) begin
+            for (k = 0; k < 3; k = k + 1) begin
+                dx_q[k*CW +: CW]  <= dx_i[k*64 +: CW];
+                dy_q[k*CW +: CW]  <= dy_i[k*64 +: CW];
+                row_q[k*CW +: CW] <= base_i[k*64 +: CW];
+                v_q[k*CW +: CW]   <= base_i[k*64 +: CW];
+            end
+            origin_q <= origin_i;
+            wm1_q    <= width_i - 12'd1;
+            hm1_q    <= height_i - 12'd1;
+            x_q      <= 12'd0;
+            y_q      <= 12'd0;
+        end else if (gen_fire) begin
+            if (x_q == wm1_q) begin
+                x_q <= 12'd0;
+                y_q <= y_q + 12'd1;
+                for (k = 0; k < 3; k = k + 1) begin
+                    row_q[k*CW +: CW] <= row_q[k*CW +: CW] + dy_q[k*CW +: CW];
+                    v_q[k*CW +: CW]   <= row_q[k*CW +: CW] + dy_q[k*CW +: CW];
+                end
+            end else begin
+                x_q <= x_q + 12'd1;
+                for (k = 0; k < 3; k = k + 1) v_q[k*CW +: CW] <= v_q[k*CW +: CW] + dx_q[k*CW +: CW];
+            end
+        end
+        if (en) begin
+            g_x_q    <= x_q;
+            g_y_q    <= y_q;
+            g_v_q    <= v_q;
+            g_last_q <= gen_last;
+        end
+    end
+
+    // ---- R: vr = rnd(v, 8) ---------------------------------------------------
+    wire [3*VW-1:0] vr_d;
+    genvar i;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_round
+            wire [CW-1:0] v   = g_v_q[i*CW +: CW];
+            wire [CW-1:0] vrf = v + {{(CW-8){1'b0}}, 8'h80};
+            wire          unused_lsb = ^vrf[7:0];
+            assign vr_d[i*VW +: VW] = vrf[CW-1:8];
+        end
+    endgenerate
+
+    localparam SIDEW = 24 + 1;   // x, y, last
+    reg             r_valid_q;
+    reg [3*VW-1:0]  r_vr_q;
+    reg [SIDEW-1:0] r_side_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) r_valid_q <= 1'b0;
+        else if (en) r_valid_q <= g_valid_q;
+        if (en) begin
+            r_vr_q   <= vr_d;
+            r_side_q <= {g_last_q, g_y_q, g_x_q};
+        end
+    end
+
+    // ---- M: squares ------------------------------------------------------------
+    wire [3*PW-1:0] sq;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_sq
+            wire unused_v;
+            csgrt_mul #(.A_WIDTH(VW), .B_WIDTH(VW)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(r_valid_q),
+                .a_i(r_vr_q[i*VW +: VW]), .b_i(r_vr_q[i*VW +: VW]),
+                .valid_o(unused_v), .p_o(sq[i*PW +: PW]));
+        end
+    endgenerate
+    localparam M_W = SIDEW + 3 * VW;
+    wire           m_valid;
+    wire [M_W-1:0] m_side;
+    csgrt_delay #(.WIDTH(M_W), .STAGES(2)) u_dly_m (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(r_valid_q),
+        .data_i({r_side_q, r_vr_q}), .valid_o(m_valid), .data_o(m_side));
+
+    // ---- S: sum of squares -----------------------------------------------------
+    // squares are non-negative; the sum is below 2^(2F+16) = 2^SW
+    wire [PW:0] sum_full = {1'b0, sq[0*PW +: PW]} + {1'b0, sq[1*PW +: PW]} + {1'b0, sq[2*PW +: PW]};
+    wire        unused_sum = ^sum_full[PW:SW];
+    reg           s_valid_q;
+    reg [SW-1:0]  s_n_q;
+    reg [M_W-1:0] s_side_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) s_valid_q <= 1'b0;
+        else if (en) s_valid_q <= m_valid;
+        if (en) begin
+            s_n_q    <= sum_full[SW-1:0];
+            s_side_q <= m_side;
+        end
+    end
+
+    // ---- Q: square root ----------------------------------------------------------
+    wire           q_valid;
+    wire [SQ-1:0]  q_root;
+    wire [M_W-1:0] q_side;
+    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(M_W)) u_sqrt (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(s_valid_q),
+        .n_i(s_n_q), .user_i(s_side_q),
+        .valid_o(q_valid), .root_o(q_root), .user_o(q_side));
+
+    // ---- P: L = root + 1, numerators vr << F -------------------------------------
+    reg             p_valid_q;
+    reg [LW-1:0]    p_len_q;
+    reg [3*NW-1:0]  p_num_q;
+    reg [SIDEW-1:0] p_side_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) p_valid_q <= 1'b0;
+        else if (en) p_valid_q <= q_valid;
+        if (en) begin
+            p_len_q  <= {2'b00, q_root} + {{(LW-1){1'b0}}, 1'b1};
+            p_num_q  <= {q_side[2*VW +: VW], {F{1'b0}}, q_side[VW +: VW], {F{1'b0}}, q_side[0 +: VW], {F{1'b0}}};
+            p_side_q <= q_side[3*VW +: SIDEW];
+        end
+    end
+
+    // ---- D: three divisions ------------------------------------------------------
+    wire             d_valid;
+    wire [3*QB-1:0]  d_mag;
+    wire [2:0]       d_neg, d_ovf;
+    wire [SIDEW-1:0] d_side;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_div
+            if (i == 0) begin : g_main
+                csgrt_div_core #(.NUM_WIDTH(NW), .DEN_WIDTH(LW), .QUOT_BITS(QB), .USER_WIDTH(SIDEW)) u_div (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p_valid_q),
+                    .num_i(p_num_q[i*NW +: NW]), .den_i(p_len_q), .user_i(p_side_q),
+                    .valid_o(d_valid), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
+                    .user_o(d_side));
+            end else begin : g_other
+                wire unused_v, unused_u;
+                csgrt_div_core #(.NUM_WIDTH(NW), .DEN_WIDTH(LW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p_valid_q),
+                    .num_i(p_num_q[i*NW +: NW]), .den_i(p_len_q), .user_i(1'b0),
+                    .valid_o(unused_v), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
+                    .user_o(unused_u));
+            end
+        end
+    endgenerate
+    // |vr_i| < L: never overflows
+    wire unused_ovf = ^d_ovf;
+
+    wire [3*B-1:0] dir;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_dir
+            wire [B-1:0] mag = {{(B-QB){1'b0}}, d_mag[i*QB +: QB]};
+            assign dir[i*B +: B] = d_neg[i] ? {B{1'b0}} - mag : mag;
+        end
+    endgenerate
+
+    // ---- output skid buffer --------------------------------------------------------
+    localparam OUTW = SIDEW + 3 * B + 3 * B;
+    wire             out_last;
+    csgrt_skid #(.WIDTH(OUTW)) u_skid (
+        .clk_i(clk_i), .rst_ni(rst_ni),
+        .valid_i(d_valid), .ready_o(en),
+        .data_i({d_side, origin_q, dir}),
+        .valid_o(m_valid_o), .ready_i(m_ready_i),
+        .data_o({out_last, m_y_o, m_x_o, m_o_o, m_d_o}));
+    assign m_last_o = out_last;
+
+    // ---- busy / done ---------------------------------------------------------------
+    wire out_fire_last = m_valid_o && m_ready_i && out_last;
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            busy_q <= 1'b0;
+            done_o <= 1'b0;
+        end else begin
+            done_o <= out_fire_last && !start_i;
+            if (start_i) busy_q <= 1'b1;
+            else if (out_fire_last) busy_q <= 1'b0;
+        end
+    end
+    assign busy_o = busy_q;
+
+    // only the low CW bits of the camera words matter (|v| < 8)
+    wire unused_cfg = ^{base_i, dx_i, dy_i};
+
+    generate
+        if (BITS < 12 || BITS > 32) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_camera needs 12 <= BITS <= 32");
+                $finish;
+            end
+        end
+    endgenerate
+
+endmodule
+
+`default_nettype wire

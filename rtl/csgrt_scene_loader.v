@@ -1,0 +1,235 @@
+`default_nettype none
+// csgrt_scene_loader — takes the binary scene image (docs/scene-image.md) as
+// a stream of 32-bit words, exactly the words `csgrt compile` writes, and
+// decodes it into the configuration the tracer runs on: camera, lights,
+// materials, leaf coefficients, candidate list and classification tree.
+// Decoding happens as the words arrive, so no copy of the image is kept.
+//
+// Handshake: word_valid_i / word_ready_o (always ready: one word per clock).
+// loaded_o rises after the last word (header TOTAL) and stays high until
+// reset; error_o then holds a code instead when the image does not fit this
+// configuration (the host reports it):
+//   1 bad magic or version     2 BITS differs from the parameter
+//   3 more than MAX_LEAVES     4 more than MAX_LIGHTS or MAX_MATERIALS
+//   5 tree height differs from TREE_HEIGHT, or no tree section
+// Memories (leaf coefficients, leaf slots, materials) have registered read
+// ports for the dispatcher and the shading lookup.
+module csgrt_scene_loader #(
+    parameter BITS          = 24,    // coordinate width B
+    parameter MAX_LEAVES    = 64,    // leaf half-spaces
+    parameter TREE_HEIGHT   = 8,     // classification tree height
+    parameter MAX_LIGHTS    = 8,
+    parameter MAX_MATERIALS = 255,   // materials besides air
+    // derived
+    parameter LEAF_BITS     = $clog2(MAX_LEAVES),
+    parameter SLOTS         = 1 << TREE_HEIGHT
+) (
+    input  wire                       clk_i,
+    input  wire                       rst_ni,
+    // the scene image
+    input  wire                       word_valid_i,
+    output wire                       word_ready_o,
+    input  wire [31:0]                word_i,
+    output reg                        loaded_o,
+    output reg  [3:0]                 error_o,
+    // frame
+    output reg  [11:0]                width_o,
+    output reg  [11:0]                height_o,
+    output reg  [LEAF_BITS:0]         num_leaves_o,
+    output reg  [3:0]                 num_lights_o,
+    // camera (docs/numerics.md section 2)
+    output reg  [3*BITS-1:0]          cam_origin_o,
+    output reg  [3*64-1:0]            cam_base_o,
+    output reg  [3*64-1:0]            cam_dx_o,
+    output reg  [3*64-1:0]            cam_dy_o,
+    output reg  [3*16-1:0]            background_o,
+    // lights
+    output reg  [MAX_LIGHTS*3*BITS-1:0] light_pos_o,
+    output reg  [MAX_LIGHTS*3*16-1:0]   light_col_o,
+    // classification tree: operator per heap position, material per slot
+    output reg  [2*SLOTS-1:0]         node_op_o,
+    output reg  [8*SLOTS-1:0]         slot_material_o,
+    output reg  [SLOTS-1:0]           slot_used_o,
+    // leaf memory read port A (dispatcher): coefficients, material, slot
+    input  wire [LEAF_BITS-1:0]       leaf_a_addr_i,
+    output reg  [10*BITS-1:0]         leaf_a_coef_o,
+    output reg  [TREE_HEIGHT-1:0]     leaf_a_slot_o,
+    // leaf memory read port B (shading lookup)
+    input  wire [LEAF_BITS-1:0]       leaf_b_addr_i,
+    output reg  [10*BITS-1:0]         leaf_b_coef_o,
+    // material memory read port (material index 1..; 0 reads entry 0)
+    input  wire [7:0]                 mat_addr_i,
+    output reg  [7*16+10-1:0]         mat_o        // the record below
+);
+    // Material record layout on mat_o (16-bit fields, 12 fraction bits):
+    //   [15:0] r  [31:16] g  [47:32] b  [63:48] ambient  [79:64] diffuse
+    //   [95:80] phong  [111:96] reflection  [121:112] phong_size
+    localparam MAT_W = 7 * 16 + 10;
+
+    // header word indices (model/scene_image.h, enum SceneHeader)
+    // (5 PROGRAM, 8 MAX_TRACE and 9 STACK are not needed by this configuration)
+    localparam H_MAGIC = 0, H_VERSION = 1, H_BITS = 2, H_SIZE = 3, H_LEAVES = 4,
+               H_MATERIALS = 6, H_LIGHTS = 7, H_OFF_CAMERA = 10,
+               H_OFF_LIGHTS = 11, H_OFF_MATERIALS = 12, H_OFF_LEAVES = 13, H_OFF_PROGRAM = 14,
+               H_OFF_TREE = 15, H_TOTAL = 16, HEADER_WORDS = 17;
+    localparam [31:0] MAGIC = 32'h52475343, VERSION = 32'd1;
+    localparam LEAF_WORDS = 11, MATERIAL_WORDS = 10, LIGHT_WORDS = 6;
+
+    assign word_ready_o = 1'b1;
+
+    reg [31:0] idx_q;                         // index of the word arriving now
+    reg [31:0] off_camera_q, off_lights_q, off_materials_q, off_leaves_q, off_program_q, off_tree_q, total_q;
+
+    // memories
+    reg [10*BITS-1:0]     leaf_coef_mem [0:MAX_LEAVES-1];
+    reg [TREE_HEIGHT-1:0] leaf_slot_mem [0:MAX_LEAVES-1];
+    reg [7:0]             leaf_mat_q    [0:MAX_LEAVES-1];
+    reg [MAT_W-1:0]       mat_mem       [0:MAX_MATERIALS];
+
+    // per-section position: item and field counters instead of divisions
+    reg [31:0]            item_q;
+    reg [3:0]             field_q;
+    reg [10*BITS-1:0]     coef_acc_q;     // the leaf being assembled
+    reg [MAT_W-11:0]      mat_acc_q;      // the material being assembled (without phong_size)
+
+    wire in_camera    = idx_q >= off_camera_q    && idx_q < off_lights_q;
+    wire in_lights    = idx_q >= off_lights_q    && idx_q < off_materials_q;
+    wire in_materials = idx_q >= off_materials_q && idx_q < off_leaves_q;
+    wire in_leaves    = idx_q >= off_leaves_q    && idx_q < off_program_q;
+    wire in_tree      = idx_q >= off_tree_q      && idx_q < total_q;
+    wire [31:0] cam_r  = idx_q - off_camera_q;
+    wire [31:0] tree_r = idx_q - off_tree_q;
+    // a section starts: its counters restart
+    wire section_start = (idx_q == off_lights_q) || (idx_q == off_materials_q) || (idx_q == off_leaves_q);
+    wire [3:0] section_size = in_lights ? LIGHT_WORDS[3:0] : in_materials ? MATERIAL_WORDS[3:0] : LEAF_WORDS[3:0];
+    wire [31:0] w = word_i;
+    // this word's field and item within the current section
+    wire [3:0]  f_now  = section_start ? 4'd0 : field_q;
+    wire [31:0] it_now = section_start ? 32'd0 : item_q;
+    wire [31:0] tree_leaf = tree_r - SLOTS - 1;
+
+    integer k;
+
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            idx_q        <= 32'd0;
+            loaded_o     <= 1'b0;
+            error_o      <= 4'd0;
+            slot_used_o  <= {SLOTS{1'b0}};
+            num_lights_o <= 4'd0;
+            // until the header arrives every section lies beyond any index
+            off_camera_q <= 32'hffff_ffff; off_lights_q <= 32'hffff_ffff; off_materials_q <= 32'hffff_ffff;
+            off_leaves_q <= 32'hffff_ffff; off_program_q <= 32'hffff_ffff; off_tree_q <= 32'hffff_ffff;
+            total_q      <= 32'hffff_ffff;
+            item_q       <= 32'd0;
+            field_q      <= 4'd0;
+        end else if (word_valid_i && !loaded_o) begin
+            idx_q <= idx_q + 32'd1;
+            if (idx_q + 32'd1 == total_q) loaded_o <= 1'b1;
+
+            // ---- header
+            if (idx_q < HEADER_WORDS) begin
+                case (idx_q)
+                    H_MAGIC:         if (w != MAGIC) error_o <= 4'd1;
+                    H_VERSION:       if (w != VERSION) error_o <= 4'd1;
+                    H_BITS:          if (w != BITS) error_o <= 4'd2;
+                    H_SIZE:          begin width_o <= w[11:0]; height_o <= w[27:16]; end
+                    H_LEAVES:        begin
+                                         if (w > MAX_LEAVES) error_o <= 4'd3;
+                                         num_leaves_o <= w[LEAF_BITS:0];
+                                     end
+                    H_MATERIALS:     if (w > MAX_MATERIALS + 1) error_o <= 4'd4;
+                    H_LIGHTS:        begin
+                                         if (w > MAX_LIGHTS) error_o <= 4'd4;
+                                         num_lights_o <= w[3:0];
+                                     end
+                    H_OFF_CAMERA:    off_camera_q    <= w;
+                    H_OFF_LIGHTS:    off_lights_q    <= w;
+                    H_OFF_MATERIALS: off_materials_q <= w;
+                    H_OFF_LEAVES:    off_leaves_q    <= w;
+                    H_OFF_PROGRAM:   off_program_q   <= w;
+                    H_OFF_TREE:      off_tree_q      <= w;
+                    H_TOTAL:         total_q         <= w;
+                    default: ;   // program length, trace depth, stack: not needed here
+                endcase
+            end
+
+            // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3)
+            if (in_camera) begin
+                if (cam_r < 3)
+                    cam_origin_o[cam_r[1:0]*BITS +: BITS] <= w[BITS-1:0];
+                else if (cam_r < 9)
+                    cam_base_o[(cam_r - 3) * 32 +: 32] <= w;
+                else if (cam_r < 15)
+                    cam_dx_o[(cam_r - 9) * 32 +: 32] <= w;
+                else if (cam_r < 21)
+                    cam_dy_o[(cam_r - 15) * 32 +: 32] <= w;
+                else if (cam_r < 24)
+                    background_o[(cam_r - 21) * 16 +: 16] <= w[15:0];
+            end
+
+            // ---- lights, materials, leaves: item / field counters
+            if (in_lights || in_materials || in_leaves) begin
+                if (section_start || field_q + 4'd1 == section_size) begin
+                    field_q <= section_start ? 4'd1 : 4'd0;
+                    item_q  <= section_start ? 32'd0 : item_q + 32'd1;
+                end else begin
+                    field_q <= field_q + 4'd1;
+                end
+            end
+            if (in_lights && it_now < MAX_LIGHTS) begin
+                if (f_now < 3) light_pos_o[(it_now * 3 + {28'd0, f_now}) * BITS +: BITS] <= w[BITS-1:0];
+                else           light_col_o[(it_now * 3 + {28'd0, f_now} - 3) * 16 +: 16] <= w[15:0];
+            end
+            if (in_materials) begin
+                // words: r g b filter ambient diffuse phong reflection ior phong_size
+                case (f_now)
+                    4'd0: mat_acc_q[0  +: 16] <= w[15:0];
+                    4'd1: mat_acc_q[16 +: 16] <= w[15:0];
+                    4'd2: mat_acc_q[32 +: 16] <= w[15:0];
+                    4'd4: mat_acc_q[48 +: 16] <= w[15:0];
+                    4'd5: mat_acc_q[64 +: 16] <= w[15:0];
+                    4'd6: mat_acc_q[80 +: 16] <= w[15:0];
+                    4'd7: mat_acc_q[96 +: 16] <= w[15:0];
+                    4'd9: if (it_now < MAX_MATERIALS)
+                              mat_mem[it_now[7:0] + 8'd1] <= {w[9:0], mat_acc_q[111:0]};
+                    default: ;   // filter, ior: used by the effects, not yet
+                endcase
+            end
+            if (in_leaves) begin
+                if (f_now < 10) begin
+                    coef_acc_q[f_now * BITS +: BITS] <= w[BITS-1:0];
+                end else if (it_now < MAX_LEAVES) begin
+                    leaf_coef_mem[it_now[LEAF_BITS-1:0]] <= coef_acc_q;
+                    leaf_mat_q[it_now[LEAF_BITS-1:0]]    <= w[7:0];
+                end
+            end
+
+            // ---- tree: height, 2^H operators, one slot per leaf
+            if (in_tree) begin
+                if (tree_r == 0) begin
+                    if (w != TREE_HEIGHT) error_o <= 4'd5;
+                end else if (tree_r <= SLOTS) begin
+                    node_op_o[(tree_r - 1) * 2 +: 2] <= w[1:0];
+                end else if (tree_leaf < MAX_LEAVES) begin
+                    leaf_slot_mem[tree_leaf[LEAF_BITS-1:0]] <= w[TREE_HEIGHT-1:0];
+                    slot_material_o[w[TREE_HEIGHT-1:0] * 8 +: 8] <= leaf_mat_q[tree_leaf[LEAF_BITS-1:0]];
+                    slot_used_o[w[TREE_HEIGHT-1:0]] <= 1'b1;
+                end
+            end
+        end
+    end
+
+    // registered read ports
+    always @(posedge clk_i) begin
+        leaf_a_coef_o <= leaf_coef_mem[leaf_a_addr_i];
+        leaf_a_slot_o <= leaf_slot_mem[leaf_a_addr_i];
+        leaf_b_coef_o <= leaf_coef_mem[leaf_b_addr_i];
+        mat_o         <= mat_mem[mat_addr_i];
+    end
+
+    initial begin
+        for (k = 0; k <= MAX_MATERIALS; k = k + 1) mat_mem[k] = {MAT_W{1'b0}};
+    end
+endmodule
+`default_nettype wire

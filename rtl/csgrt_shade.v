@@ -1,0 +1,740 @@
+`default_nettype none
+// csgrt_shade — shading and colour output, bit for bit
+// srgb_encode_fx(shade_fx(...)) of model/render.cpp per channel
+// (docs/numerics.md section 6). One input per pixel (the walker's hit and the
+// ray, the hit leaf's coefficients, the shown material), one output per pixel
+// {x, y, r, g, b}, in order.
+//
+// Formats: B = BITS, F = B-3, FC = B-1; PF = 12 (positions, gradient), SF =
+// 15 (unit vectors), CF = 12 (colours, finish, light intensity: 16-bit
+// unsigned). Internal widths (bounds from numerics.md and shade_fx):
+//   ps 18, ds 17, ks 17, g 18, n 17 (|n| < 2^15), dn 18, r 18, lv 18,
+//   l 17, ndl 18, cos_r / pow 18, ph 18, diffuse sum 22, specular sum 26.
+//
+// Segment A, per pixel (one global enable, skid buffer A's ready):
+//   A0  mul (2)   t d_i                         3 csgrt_mul (F+2) x B
+//   A1  add (1)   p = o + rnd(t d, F); ps, ds, ks aligned
+//   A2  mul (2)   ks.A_ij ps_j                   9 csgrt_mul 17 x 18
+//   A3  add (1)   g = rnd(A ps + ks.p << PF, SF)
+//   A4  mul (2)   g_i^2                          3 csgrt_mul 18 x 18
+//   A5  add (1)   |g|^2
+//   A6  sqrt(17)  csgrt_sqrt_core
+//   A7  add (1)   L = root + 1, numerators g << SF
+//   A8  div (17)  three csgrt_div_core (16 quotient bits): n
+//   A9  reg (1)   n signed
+//   A10 mul (2)   n_i ds_i                       3 csgrt_mul 17 x 17
+//   A11 add (1)   face forward (exact sign of n.ds), dn = rnd(ds.n, SF)
+//   A12 mul (2)   dn n_i                         3 csgrt_mul 18 x 17
+//   A13 add (0)   r = ds - rnd(2 dn n, SF) = ds - rnd(dn n, SF-1); skid A (1)
+// Light sequencer: the pixel at skid A's output is issued into segment B
+//   once per light (max(1, lights) items; a miss or no light: one item
+//   that adds nothing), then popped.
+// Segment B, per light item (one global enable, the output skid's ready):
+//   B1  add (1)   lv = align(light, F, PF) - ps
+//   B2  mul (2)   lv_i^2                         3 csgrt_mul 18 x 18
+//   B3  add (1)   |lv|^2
+//   B4  sqrt(17)  csgrt_sqrt_core
+//   B5  add (1)   L = root + 1, numerators lv << SF
+//   B6  div (17)  three csgrt_div_core: l
+//   B7  reg (1)   l signed
+//   B8  mul (2)   n_i l_i, r_i l_i               6 csgrt_mul
+//   B9  add (1)   ndl = rnd(n.l, SF), cos_r = rnd(r.l, SF), enables
+//   B10 pow (20)  pow_fx(cos_r, phong_size): 10 stages of 2 clocks, from
+//                 the exponent's LSB; stage k: result = rnd(result base)
+//                 if bit k, base = rnd(base^2) (none after the last bit)
+//                                                18 csgrt_mul 18 x 18
+//   B11 mul (2)   phong pw                       1 csgrt_mul 17 x 18
+//   B12 mul (2)   light_c ph, light_c ndl        6 csgrt_mul 17 x 18
+//   B13 acc (1)   diff_c += rnd(light_c ndl, SF) if ndl > 0,
+//                 spec_c += rnd(light_c ph, CF) if phong > 0 and cos_r > 0
+//                 (first item of a pixel restarts the sums; the last item
+//                 passes the pixel on)
+//   C1  mul (2)   diffuse diff_c                 3 csgrt_mul 17 x 22
+//   C2  add (1)   intensity = ambient + rnd(., CF)
+//   C3  mul (2)   pigment_c intensity            3 csgrt_mul 17 x 25
+//   C4  add (1)   col = rnd(., CF) + spec (miss: background), clamp 0..4095
+//   C5  lut (1)   csgrt_srgb x 3;  output skid (1)
+// Multipliers: 21 (A) + 34 (B) + 6 (C) = 61 csgrt_mul.
+// Latency (no back-pressure): 127 clocks from input to output for a miss or
+// one light (any BITS: shading widths are fixed); light k adds k clocks.
+// Throughput: segment A one pixel per clock; segment B one light per clock:
+// a hit pixel every max(1, lights) clocks, a miss every clock.
+// Handshake: valid/ready on both sides; s_ready_o is skid A's registered
+// ready, never combinational from m_ready_i. Config (lights, background) is
+// read when a pixel's items are issued; hold it steady while shading.
+module csgrt_shade #(
+    parameter BITS       = 24,                // coordinate width B (12..32)
+    parameter MAX_LIGHTS = 8,                 // point lights (>= 1)
+    parameter LUT_FILE   = "rtl/srgb_lut.hex" // sRGB table (csgrt_srgb)
+) (
+    input  wire                          clk_i,
+    input  wire                          rst_ni,         // synchronous, active low
+    // configuration
+    input  wire [$clog2(MAX_LIGHTS+1)-1:0] num_lights_i, // 0..MAX_LIGHTS
+    input  wire [MAX_LIGHTS*3*BITS-1:0]  light_pos_i,    // light k, axis i at (3k+i)*BITS, F frac
+    input  wire [MAX_LIGHTS*3*16-1:0]    light_color_i,  // light k, channel c at (3k+c)*16, 12 frac
+    input  wire [3*16-1:0]               background_i,   // r, g, b (r low), 12 frac
+    // input stream: one pixel
+    input  wire                          s_valid_i,
+    output wire                          s_ready_o,
+    input  wire [11:0]                   s_x_i,
+    input  wire [11:0]                   s_y_i,
+    input  wire                          s_hit_i,
+    input  wire [BITS-2:0]               s_t_i,          // F+2 bits signed, F frac
+    input  wire [3*BITS-1:0]             s_o_i,          // ray origin, F frac
+    input  wire [3*BITS-1:0]             s_d_i,          // ray direction, F frac
+    input  wire [10*BITS-1:0]            s_coef_i,       // hit leaf, CoefIndex order, FC frac
+    input  wire [3*16-1:0]               s_rgb_i,        // pigment, 12 frac
+    input  wire [15:0]                   s_ambient_i,
+    input  wire [15:0]                   s_diffuse_i,
+    input  wire [15:0]                   s_phong_i,
+    input  wire [9:0]                    s_phong_size_i, // 1..1023
+    // output stream: one pixel
+    output wire                          m_valid_o,
+    input  wire                          m_ready_i,
+    output wire [11:0]                   m_x_o,
+    output wire [11:0]                   m_y_o,
+    output wire [7:0]                    m_r_o,
+    output wire [7:0]                    m_g_o,
+    output wire [7:0]                    m_b_o
+);
+
+    // ---- formats -------------------------------------------------------------
+    localparam B    = BITS;
+    localparam F    = B - 3;
+    localparam FC   = B - 1;
+    localparam TW   = F + 2;
+    localparam NLW  = $clog2(MAX_LIGHTS + 1);        // light count width
+    localparam KW_L = (MAX_LIGHTS > 1) ? $clog2(MAX_LIGHTS) : 1;   // light index width
+    localparam PSW  = 18;    // ps, lv: PF bits
+    localparam DSW  = 17;    // ds (can be exactly 1.0 after rounding)
+    localparam KSW  = 17;    // ks
+    localparam GW   = 18;    // g, lv
+    localparam QB   = 16;    // quotient bits: SF + 1
+    localparam NVW  = QB + 1;   // unit vector, signed
+    localparam DNW  = 18;
+    localparam RW   = 18;
+    localparam NDW  = 18;    // ndl, cos_r, pow values
+    localparam DAW  = 22;    // diffuse sum
+    localparam SAW  = 26;    // specular sum
+    localparam IW   = 25;    // intensity
+    localparam CLW  = 31;    // colour before the clamp
+
+    // pixel side data: {phong_size, phong, diffuse, ambient, rgb, hit, y, x}
+    localparam PIXW = 10 + 16 * 3 + 48 + 1 + 24;
+    localparam PX_HIT = 24, PX_RGB = 25, PX_AMB = 73, PX_DIF = 89, PX_PH = 105,
+               PX_PHS = 121;
+
+    wire en_a;   // segment A enable: skid A's ready
+    wire en_b;   // segment B and C enable: output skid's ready
+    assign s_ready_o = en_a;
+
+    genvar i, j;
+
+    // =========================================================================
+    // Segment A: per pixel
+    // =========================================================================
+    // ---- A0: t d_i ---------------------------------------------------------
+    wire [3*(TW+B)-1:0] td;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_a0
+            wire unused_v;
+            csgrt_mul #(.A_WIDTH(TW), .B_WIDTH(B)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(s_valid_i),
+                .a_i(s_t_i), .b_i(s_d_i[i*B +: B]), .valid_o(unused_v), .p_o(td[i*(TW+B) +: TW+B]));
+        end
+    endgenerate
+    wire [PIXW-1:0] s_pix = {s_phong_size_i, s_phong_i, s_diffuse_i, s_ambient_i, s_rgb_i, s_hit_i, s_y_i, s_x_i};
+    localparam A0W = PIXW + 15 * B;
+    wire unused_q = ^s_coef_i[9*B +: B];   // the constant term does not enter the gradient
+    wire           a0_valid;
+    wire [A0W-1:0] a0_side;
+    csgrt_delay #(.WIDTH(A0W), .STAGES(2)) u_dly_a0 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(s_valid_i),
+        .data_i({s_pix, s_coef_i[0 +: 9*B], s_d_i, s_o_i}), .valid_o(a0_valid), .data_o(a0_side));
+    wire [3*B-1:0]  a0_o    = a0_side[0 +: 3*B];
+    wire [3*B-1:0]  a0_d    = a0_side[3*B +: 3*B];
+    wire [9*B-1:0]  a0_coef = a0_side[6*B +: 9*B];
+    wire [PIXW-1:0] a0_pix  = a0_side[15*B +: PIXW];
+
+    // ---- A1: hit point and the shading copies --------------------------------
+    localparam PW = B + 2;   // p = o + rnd(t d, F), exact (|p| < 6)
+    wire [3*PSW-1:0] ps_d;
+    wire [3*DSW-1:0] ds_d;
+    wire [9*KSW-1:0] ks_d;   // q is not needed for the gradient
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_a1
+            wire [TW+B-1:0] prod = td[i*(TW+B) +: TW+B];
+            wire [TW+B-1:0] prod_r = prod + {{(TW+B-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            wire [PW-1:0]   tdr = prod_r[F +: PW];   // |t d| < 2: fits
+            wire unused_td = ^prod_r[F-1:0];
+            wire [B-1:0]    o = a0_o[i*B +: B];
+            wire [PW-1:0]   p = {{2{o[B-1]}}, o} + tdr;
+            csgrt_align #(.IN_W(PW), .OUT_W(PSW), .FROM(F), .TO(12)) u_ps (.v_i(p), .v_o(ps_d[i*PSW +: PSW]));
+            csgrt_align #(.IN_W(B), .OUT_W(DSW), .FROM(F), .TO(15)) u_ds (
+                .v_i(a0_d[i*B +: B]), .v_o(ds_d[i*DSW +: DSW]));
+        end
+        for (i = 0; i < 9; i = i + 1) begin : g_ks
+            csgrt_align #(.IN_W(B), .OUT_W(KSW), .FROM(FC), .TO(15)) u_ks (
+                .v_i(a0_coef[i*B +: B]), .v_o(ks_d[i*KSW +: KSW]));
+        end
+    endgenerate
+    reg              a1_valid_q;
+    reg [3*PSW-1:0]  a1_ps_q;
+    reg [3*DSW-1:0]  a1_ds_q;
+    reg [9*KSW-1:0]  a1_ks_q;
+    reg [PIXW-1:0]   a1_pix_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) a1_valid_q <= 1'b0;
+        else if (en_a) a1_valid_q <= a0_valid;
+        if (en_a) begin
+            a1_ps_q  <= ps_d;
+            a1_ds_q  <= ds_d;
+            a1_ks_q  <= ks_d;
+            a1_pix_q <= a0_pix;
+        end
+    end
+
+    // ---- A2: gradient products ks.A_ij ps_j ----------------------------------
+    localparam GPW = KSW + PSW;   // 35
+    wire [9*GPW-1:0] gp;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_a2_row
+            for (j = 0; j < 3; j = j + 1) begin : g_a2_col
+                localparam CI = (i == j) ? i : (i + j == 1) ? 3 : (i + j == 2) ? 4 : 5;
+                wire unused_v;
+                csgrt_mul #(.A_WIDTH(KSW), .B_WIDTH(PSW)) u_mul (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a1_valid_q),
+                    .a_i(a1_ks_q[CI*KSW +: KSW]), .b_i(a1_ps_q[j*PSW +: PSW]),
+                    .valid_o(unused_v), .p_o(gp[(3*i+j)*GPW +: GPW]));
+            end
+        end
+    endgenerate
+    localparam A2W = PIXW + 3 * PSW + 3 * DSW + 3 * KSW;
+    wire           a2_valid;
+    wire [A2W-1:0] a2_side;
+    csgrt_delay #(.WIDTH(A2W), .STAGES(2)) u_dly_a2 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a1_valid_q),
+        .data_i({a1_pix_q, a1_ks_q[6*KSW +: 3*KSW], a1_ds_q, a1_ps_q}), .valid_o(a2_valid), .data_o(a2_side));
+    localparam PDW = 3 * PSW + 3 * DSW;   // {ds, ps}
+    wire [3*KSW-1:0] a2_kp  = a2_side[PDW +: 3*KSW];
+    wire [PDW-1:0]   a2_pd  = a2_side[0 +: PDW];
+    wire [PIXW-1:0]  a2_pix = a2_side[PDW+3*KSW +: PIXW];
+
+    // ---- A3: g = rnd(A ps + ks.p << PF, SF) ----------------------------------
+    localparam GSW = GPW + 3;   // exact sum
+    wire [3*GW-1:0] g_d;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_a3
+            wire [GPW-1:0] p0 = gp[(3*i+0)*GPW +: GPW];
+            wire [GPW-1:0] p1 = gp[(3*i+1)*GPW +: GPW];
+            wire [GPW-1:0] p2 = gp[(3*i+2)*GPW +: GPW];
+            wire [KSW-1:0] kp = a2_kp[i*KSW +: KSW];
+            wire [GSW-1:0] s = {{3{p0[GPW-1]}}, p0} + {{3{p1[GPW-1]}}, p1} + {{3{p2[GPW-1]}}, p2}
+                             + {{(GSW-KSW-12){kp[KSW-1]}}, kp, 12'd0}
+                             + {{(GSW-15){1'b0}}, 1'b1, 14'd0};
+            wire unused_s = ^{s[14:0], s[GSW-1:15+GW]};
+            assign g_d[i*GW +: GW] = s[15 +: GW];
+        end
+    endgenerate
+    reg             a3_valid_q;
+    reg [3*GW-1:0]  a3_g_q;
+    reg [PDW-1:0]   a3_pd_q;
+    reg [PIXW-1:0]  a3_pix_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) a3_valid_q <= 1'b0;
+        else if (en_a) a3_valid_q <= a2_valid;
+        if (en_a) begin
+            a3_g_q   <= g_d;
+            a3_pd_q  <= a2_pd;
+            a3_pix_q <= a2_pix;
+        end
+    end
+
+    // ---- A4..A9: n = unit(g) -------------------------------------------------
+    localparam A4W = PIXW + PDW;
+    wire             a9_valid;
+    wire [3*NVW-1:0] a9_n;
+    wire [A4W-1:0]   a9_side;
+    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(A4W)) u_unit_n (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a3_valid_q),
+        .v_i(a3_g_q), .user_i({a3_pix_q, a3_pd_q}),
+        .valid_o(a9_valid), .u_o(a9_n), .user_o(a9_side));
+    wire [3*DSW-1:0] a9_ds = a9_side[3*PSW +: 3*DSW];
+
+    // ---- A10: n_i ds_i -------------------------------------------------------
+    localparam NDPW = NVW + DSW;   // 34
+    wire [3*NDPW-1:0] nds;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_a10
+            wire unused_v;
+            csgrt_mul #(.A_WIDTH(NVW), .B_WIDTH(DSW)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a9_valid),
+                .a_i(a9_n[i*NVW +: NVW]), .b_i(a9_ds[i*DSW +: DSW]),
+                .valid_o(unused_v), .p_o(nds[i*NDPW +: NDPW]));
+        end
+    endgenerate
+    wire             a10_valid;
+    wire [3*NVW-1:0] a10_n;
+    wire [A4W-1:0]   a10_side;
+    csgrt_delay #(.WIDTH(3 * NVW + A4W), .STAGES(2)) u_dly_a10 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a9_valid),
+        .data_i({a9_side, a9_n}), .valid_o(a10_valid), .data_o({a10_side, a10_n}));
+
+    // ---- A11: face the ray, dn = rnd(ds.n, SF) --------------------------------
+    localparam NDSW = NDPW + 2;
+    wire [NDSW-1:0] nd = {{2{nds[NDPW-1]}}, nds[0 +: NDPW]} + {{2{nds[2*NDPW-1]}}, nds[NDPW +: NDPW]}
+                       + {{2{nds[3*NDPW-1]}}, nds[2*NDPW +: NDPW]};
+    // exact sign of the full dot product: flip when n.ds > 0
+    wire            flip = !nd[NDSW-1] && (nd != {NDSW{1'b0}});
+    wire [NDSW-1:0] ndf = flip ? {NDSW{1'b0}} - nd : nd;   // ds . n after the flip
+    wire [NDSW-1:0] ndf_r = ndf + {{(NDSW-15){1'b0}}, 1'b1, 14'd0};
+    wire unused_ndf = ^{ndf_r[14:0], ndf_r[NDSW-1:15+DNW]};
+    wire [3*NVW-1:0] nf_d;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_a11
+            wire [NVW-1:0] n = a10_n[i*NVW +: NVW];
+            assign nf_d[i*NVW +: NVW] = flip ? {NVW{1'b0}} - n : n;
+        end
+    endgenerate
+    reg             a11_valid_q;
+    reg [3*NVW-1:0] a11_n_q;
+    reg [DNW-1:0]   a11_dn_q;
+    reg [A4W-1:0]   a11_side_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) a11_valid_q <= 1'b0;
+        else if (en_a) a11_valid_q <= a10_valid;
+        if (en_a) begin
+            a11_n_q    <= nf_d;
+            a11_dn_q   <= ndf_r[15 +: DNW];
+            a11_side_q <= a10_side;
+        end
+    end
+
+    // ---- A12: dn n_i; A13: r = ds - rnd(2 dn n, SF) ---------------------------
+    localparam DNPW = DNW + NVW;   // 35
+    wire [3*DNPW-1:0] dnn;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_a12
+            wire unused_v;
+            csgrt_mul #(.A_WIDTH(DNW), .B_WIDTH(NVW)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a11_valid_q),
+                .a_i(a11_dn_q), .b_i(a11_n_q[i*NVW +: NVW]),
+                .valid_o(unused_v), .p_o(dnn[i*DNPW +: DNPW]));
+        end
+    endgenerate
+    wire             a12_valid;
+    wire [3*NVW-1:0] a12_n;
+    wire [A4W-1:0]   a12_side;
+    csgrt_delay #(.WIDTH(3 * NVW + A4W), .STAGES(2)) u_dly_a12 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a11_valid_q),
+        .data_i({a11_side_q, a11_n_q}), .valid_o(a12_valid), .data_o({a12_side, a12_n}));
+    wire [3*PSW-1:0] a12_ps  = a12_side[0 +: 3*PSW];
+    wire [3*DSW-1:0] a12_ds  = a12_side[3*PSW +: 3*DSW];
+    wire [PIXW-1:0]  a12_pix = a12_side[PDW +: PIXW];
+    wire [3*RW-1:0]  r_d;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_a13
+            // rnd(2 x, 15) = rnd(x, 14)
+            wire [DNPW-1:0] pr = dnn[i*DNPW +: DNPW] + {{(DNPW-14){1'b0}}, 1'b1, 13'd0};
+            wire unused_pr = ^{pr[13:0], pr[DNPW-1:14+RW]};
+            wire [DSW-1:0]  ds = a12_ds[i*DSW +: DSW];
+            assign r_d[i*RW +: RW] = {ds[DSW-1], ds} - pr[14 +: RW];
+        end
+    endgenerate
+
+    // ---- skid A ------------------------------------------------------------------
+    localparam SKAW = PIXW + 3 * PSW + 3 * NVW + 3 * RW;
+    wire             ska_valid;
+    wire             ska_ready;
+    wire [SKAW-1:0]  ska_data;
+    csgrt_skid #(.WIDTH(SKAW)) u_skid_a (
+        .clk_i(clk_i), .rst_ni(rst_ni),
+        .valid_i(a12_valid), .ready_o(en_a), .data_i({a12_pix, r_d, a12_n, a12_ps}),
+        .valid_o(ska_valid), .ready_i(ska_ready), .data_o(ska_data));
+    wire [3*PSW-1:0] sq_ps  = ska_data[0 +: 3*PSW];
+    wire [3*NVW-1:0] sq_n   = ska_data[3*PSW +: 3*NVW];
+    wire [3*RW-1:0]  sq_r   = ska_data[3*PSW+3*NVW +: 3*RW];
+    wire [PIXW-1:0]  sq_pix = ska_data[3*PSW+3*NVW+3*RW +: PIXW];
+
+    // =========================================================================
+    // Light sequencer
+    // =========================================================================
+    reg  [KW_L-1:0] k_q;   // light of the next item
+    wire            sq_use  = sq_pix[PX_HIT] && (num_lights_i != {NLW{1'b0}});
+    // last item: the last light, or the only item of a miss / a scene without lights
+    wire [NLW:0]    k_x     = {{(NLW+1-KW_L){1'b0}}, k_q};
+    wire [NLW:0]    nl_x    = {1'b0, num_lights_i};
+    wire            sq_last = !sq_use || (k_x + {{NLW{1'b0}}, 1'b1} >= nl_x);
+    wire            issue   = en_b && ska_valid;
+    assign ska_ready = en_b && sq_last;
+    always @(posedge clk_i) begin
+        if (!rst_ni) k_q <= {KW_L{1'b0}};
+        else if (issue) k_q <= sq_last ? {KW_L{1'b0}} : k_q + {{(KW_L-1){1'b0}}, 1'b1};
+    end
+
+    // =========================================================================
+    // Segment B: per light item
+    // =========================================================================
+    // ---- B1: lv = align(light, F, PF) - ps ------------------------------------
+    localparam LIDX = $clog2(MAX_LIGHTS * 3 * B + 1) + 1;   // index width into the light vectors
+    wire [LIDX-1:0]  k_l = {{(LIDX-KW_L){1'b0}}, k_q};
+    wire [3*GW-1:0]  lv_d;
+    wire [3*16-1:0]  lcol_d = light_color_i[k_l * 48 +: 48];
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_b1
+            wire [B-1:0]   lp = light_pos_i[(k_l * 3 + i) * B +: B];
+            wire [PSW-1:0] lpa;
+            csgrt_align #(.IN_W(B), .OUT_W(PSW), .FROM(F), .TO(12)) u_lp (.v_i(lp), .v_o(lpa));
+            assign lv_d[i*GW +: GW] = lpa - sq_ps[i*PSW +: PSW];
+        end
+    endgenerate
+    // item flags: {use, last, first}
+    localparam XBW = 48 + 3 * NVW + 3 * RW + PIXW + 3;
+    reg             b1_valid_q;
+    reg [3*GW-1:0]  b1_lv_q;
+    reg [XBW-1:0]   b1_x_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) b1_valid_q <= 1'b0;
+        else if (en_b) b1_valid_q <= ska_valid;
+        if (en_b) begin
+            b1_lv_q <= lv_d;
+            b1_x_q  <= {sq_use, sq_last, (k_q == {KW_L{1'b0}}), sq_pix, sq_r, sq_n, lcol_d};
+        end
+    end
+
+    // ---- B2..B7: l = unit(lv) ------------------------------------------------
+    wire             b7_valid;
+    wire [3*NVW-1:0] b7_l;
+    wire [XBW-1:0]   b7_x;
+    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(XBW)) u_unit_l (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b1_valid_q),
+        .v_i(b1_lv_q), .user_i(b1_x_q),
+        .valid_o(b7_valid), .u_o(b7_l), .user_o(b7_x));
+    wire [47:0]      b7_lcol = b7_x[0 +: 48];
+    wire [3*NVW-1:0] b7_n    = b7_x[48 +: 3*NVW];
+    wire [3*RW-1:0]  b7_r    = b7_x[48+3*NVW +: 3*RW];
+    wire [PIXW-1:0]  b7_pix  = b7_x[48+3*NVW+3*RW +: PIXW];
+    wire [2:0]       b7_fl   = b7_x[48+3*NVW+3*RW+PIXW +: 3];
+
+    // ---- B8: n_i l_i, r_i l_i ---------------------------------------------------
+    localparam NLPW = 2 * NVW;     // 34
+    localparam RLPW = RW + NVW;    // 35
+    wire [3*NLPW-1:0] nl_p;
+    wire [3*RLPW-1:0] rl_p;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_b8
+            wire unused_vn, unused_vr;
+            csgrt_mul #(.A_WIDTH(NVW), .B_WIDTH(NVW)) u_mul_n (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
+                .a_i(b7_n[i*NVW +: NVW]), .b_i(b7_l[i*NVW +: NVW]),
+                .valid_o(unused_vn), .p_o(nl_p[i*NLPW +: NLPW]));
+            csgrt_mul #(.A_WIDTH(RW), .B_WIDTH(NVW)) u_mul_r (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
+                .a_i(b7_r[i*RW +: RW]), .b_i(b7_l[i*NVW +: NVW]),
+                .valid_o(unused_vr), .p_o(rl_p[i*RLPW +: RLPW]));
+        end
+    endgenerate
+    localparam X2W = 48 + PIXW + 3;   // {flags, pix, lcol}
+    wire           b8_valid;
+    wire [X2W-1:0] b8_x;
+    csgrt_delay #(.WIDTH(X2W), .STAGES(2)) u_dly_b8 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
+        .data_i({b7_fl, b7_pix, b7_lcol}), .valid_o(b8_valid), .data_o(b8_x));
+    wire [PIXW-1:0] b8_pix = b8_x[48 +: PIXW];
+    wire unused_b8_pix = ^{b8_pix[PIXW-1:PX_PH+16], b8_pix[PX_PH-1:0]};
+    wire            b8_use = b8_x[48+PIXW+2];
+
+    // ---- B9: ndl, cos_r and the enables -----------------------------------------
+    localparam NLSW = NLPW + 2;
+    localparam RLSW = RLPW + 2;
+    wire [NLSW-1:0] ndl_s = {{2{nl_p[NLPW-1]}}, nl_p[0 +: NLPW]} + {{2{nl_p[2*NLPW-1]}}, nl_p[NLPW +: NLPW]}
+                          + {{2{nl_p[3*NLPW-1]}}, nl_p[2*NLPW +: NLPW]} + {{(NLSW-15){1'b0}}, 1'b1, 14'd0};
+    wire [RLSW-1:0] cr_s  = {{2{rl_p[RLPW-1]}}, rl_p[0 +: RLPW]} + {{2{rl_p[2*RLPW-1]}}, rl_p[RLPW +: RLPW]}
+                          + {{2{rl_p[3*RLPW-1]}}, rl_p[2*RLPW +: RLPW]} + {{(RLSW-15){1'b0}}, 1'b1, 14'd0};
+    wire [NLSW-16:0] ndl_full = ndl_s[NLSW-1:15];
+    wire [RLSW-16:0] cr_full  = cr_s[RLSW-1:15];
+    wire unused_b9 = ^{ndl_s[14:0], cr_s[14:0]};
+    wire ndl_pos = !ndl_full[NLSW-16] && (ndl_full != {(NLSW-15){1'b0}});
+    wire cr_pos  = !cr_full[RLSW-16] && (cr_full != {(RLSW-15){1'b0}});
+    wire ph_pos  = (b8_pix[PX_PH +: 16] != 16'd0);
+    reg            b9_valid_q;
+    reg [NDW-1:0]  b9_ndl_q, b9_cr_q;
+    reg            b9_den_q, b9_sen_q;
+    reg [X2W-1:0]  b9_x_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) b9_valid_q <= 1'b0;
+        else if (en_b) b9_valid_q <= b8_valid;
+        if (en_b) begin
+            b9_ndl_q <= ndl_full[NDW-1:0];
+            b9_cr_q  <= cr_full[NDW-1:0];
+            b9_den_q <= b8_use && ndl_pos;
+            b9_sen_q <= b8_use && ph_pos && cr_pos;
+            b9_x_q   <= b8_x;
+        end
+    end
+    wire unused_b9_top = ^{ndl_full[NLSW-16:NDW], cr_full[RLSW-16:NDW]};
+
+    // ---- B10: pw = pow_fx(cos_r, phong_size, SF) ---------------------------------
+    // stage k: res = bit k ? rnd(res * base, SF) : res; base = rnd(base^2, SF)
+    localparam NPOW = 10;
+    localparam PPW  = 2 * NDW;
+    localparam PSDW = NDW + 2 + X2W;   // {enables, ndl, x} through the stages
+    wire [(NPOW+1)*NDW-1:0]  pw_res, pw_base;
+    wire [(NPOW+1)*PSDW-1:0] pw_side;
+    wire [NPOW:0]            pw_valid;
+    assign pw_res[0 +: NDW]    = {{(NDW-16){1'b0}}, 1'b1, 15'd0};   // 1.0
+    assign pw_base[0 +: NDW]   = b9_cr_q;
+    assign pw_side[0 +: PSDW]  = {b9_sen_q, b9_den_q, b9_ndl_q, b9_x_q};
+    assign pw_valid[0]         = b9_valid_q;
+    generate
+        for (i = 0; i < NPOW; i = i + 1) begin : g_pow
+            wire [NDW-1:0]  res_in  = pw_res[i*NDW +: NDW];
+            wire [NDW-1:0]  base_in = pw_base[i*NDW +: NDW];
+            wire [NDW-1:0]  res_dly;
+            wire [PSDW-1:0] side_dly;
+            wire [NDW-1:0]  base_dly;
+            csgrt_delay #(.WIDTH(PSDW + 2 * NDW), .STAGES(2)) u_dly (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
+                .data_i({pw_side[i*PSDW +: PSDW], base_in, res_in}), .valid_o(pw_valid[i+1]),
+                .data_o({side_dly, base_dly, res_dly}));
+            wire [PIXW-1:0] pix = side_dly[48 +: PIXW];
+            wire            bit_k = pix[PX_PHS + i];
+            // result: stage 0 multiplies by 1.0, which is exact: res = base
+            if (i == 0) begin : g_first
+                assign pw_res[(i+1)*NDW +: NDW] = bit_k ? base_dly : res_dly;
+            end else begin : g_mul_res
+                wire [PPW-1:0] pr;
+                wire           unused_v;
+                csgrt_mul #(.A_WIDTH(NDW), .B_WIDTH(NDW)) u_mul_r (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
+                    .a_i(res_in), .b_i(base_in), .valid_o(unused_v), .p_o(pr));
+                wire [PPW-1:0] prr = pr + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
+                wire unused_prr = ^{prr[14:0], prr[PPW-1:15+NDW]};
+                assign pw_res[(i+1)*NDW +: NDW] = bit_k ? prr[15 +: NDW] : res_dly;
+            end
+            // base: the square after the last exponent bit is never used
+            if (i == NPOW - 1) begin : g_last
+                assign pw_base[(i+1)*NDW +: NDW] = base_dly;
+            end else begin : g_mul_base
+                wire [PPW-1:0] pb;
+                wire           unused_v;
+                csgrt_mul #(.A_WIDTH(NDW), .B_WIDTH(NDW)) u_mul_b (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
+                    .a_i(base_in), .b_i(base_in), .valid_o(unused_v), .p_o(pb));
+                wire [PPW-1:0] pbr = pb + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
+                wire unused_pbr = ^{pbr[14:0], pbr[PPW-1:15+NDW]};
+                assign pw_base[(i+1)*NDW +: NDW] = pbr[15 +: NDW];
+            end
+            assign pw_side[(i+1)*PSDW +: PSDW] = side_dly;
+            if (i != 0 && i != NPOW - 1) begin : g_mid
+                wire unused_bd = ^base_dly;
+            end
+        end
+    endgenerate
+    wire [NDW-1:0]  b10_pw    = pw_res[NPOW*NDW +: NDW];
+    wire [PSDW-1:0] b10_side  = pw_side[NPOW*PSDW +: PSDW];
+    wire            b10_valid = pw_valid[NPOW];
+    wire unused_pw_base = ^pw_base[NPOW*NDW +: NDW];
+    wire [PIXW-1:0] b10_pix   = b10_side[48 +: PIXW];
+    wire unused_b10_pix = ^{b10_pix[PIXW-1:PX_PH+16], b10_pix[PX_PH-1:0]};
+
+    // ---- B11: ph = rnd(phong pw, SF) ----------------------------------------------
+    localparam PHPW = 17 + NDW;   // 35
+    wire [PHPW-1:0] php;
+    wire            unused_vph;
+    csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_ph (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b10_valid),
+        .a_i({1'b0, b10_pix[PX_PH +: 16]}), .b_i(b10_pw), .valid_o(unused_vph), .p_o(php));
+    wire            b11_valid;
+    wire [PSDW-1:0] b11_side;
+    csgrt_delay #(.WIDTH(PSDW), .STAGES(2)) u_dly_b11 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b10_valid),
+        .data_i(b10_side), .valid_o(b11_valid), .data_o(b11_side));
+    wire [PHPW-1:0] phr = php + {{(PHPW-15){1'b0}}, 1'b1, 14'd0};
+    wire unused_phr = ^{phr[14:0], phr[PHPW-1:15+NDW]};
+    wire [NDW-1:0]  b11_ph   = phr[15 +: NDW];
+    wire [47:0]     b11_lcol = b11_side[0 +: 48];
+    wire [NDW-1:0]  b11_ndl  = b11_side[X2W +: NDW];
+
+    // ---- B12: light_c ph, light_c ndl ---------------------------------------------
+    localparam LPW = 17 + NDW;   // 35
+    wire [3*LPW-1:0] lsp, ldp;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_b12
+            wire unused_vs, unused_vd;
+            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_s (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
+                .a_i({1'b0, b11_lcol[i*16 +: 16]}), .b_i(b11_ph), .valid_o(unused_vs), .p_o(lsp[i*LPW +: LPW]));
+            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_d (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
+                .a_i({1'b0, b11_lcol[i*16 +: 16]}), .b_i(b11_ndl), .valid_o(unused_vd), .p_o(ldp[i*LPW +: LPW]));
+        end
+    endgenerate
+    localparam X3W = 2 + PIXW + 3;   // {enables, flags, pix}
+    wire           b12_valid;
+    wire [X3W-1:0] b12_x;
+    csgrt_delay #(.WIDTH(X3W), .STAGES(2)) u_dly_b12 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
+        .data_i({b11_side[PSDW-1 -: 2], b11_side[48 +: PIXW + 3]}), .valid_o(b12_valid), .data_o(b12_x));
+    wire [PIXW-1:0] b12_pix   = b12_x[0 +: PIXW];
+    wire            b12_first = b12_x[PIXW];
+    wire            b12_last  = b12_x[PIXW+1];
+    wire            b12_den   = b12_x[PIXW+3];
+    wire            b12_sen   = b12_x[PIXW+4];
+    wire unused_b12 = b12_x[PIXW+2];
+
+    // ---- B13: accumulate per pixel ---------------------------------------------------
+    reg [3*DAW-1:0] dacc_q;
+    reg [3*SAW-1:0] sacc_q;
+    wire [3*DAW-1:0] dsum;
+    wire [3*SAW-1:0] ssum;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_acc
+            wire [LPW-1:0] dp = ldp[i*LPW +: LPW] + {{(LPW-15){1'b0}}, 1'b1, 14'd0};   // rnd(., SF)
+            wire [LPW-1:0] sp = lsp[i*LPW +: LPW] + {{(LPW-12){1'b0}}, 1'b1, 11'd0};   // rnd(., CF)
+            wire unused_dp = ^{dp[14:0], dp[LPW-1:15+DAW-3], sp[11:0]};
+            // terms are non-negative (light colours >= 0, ndl > 0, ph > 0)
+            wire [DAW-1:0] dt = b12_den ? {3'b000, dp[15 +: DAW-3]} : {DAW{1'b0}};
+            wire [SAW-1:0] st = b12_sen ? {{(SAW-(LPW-12)){1'b0}}, sp[LPW-1:12]} : {SAW{1'b0}};
+            assign dsum[i*DAW +: DAW] = (b12_first ? {DAW{1'b0}} : dacc_q[i*DAW +: DAW]) + dt;
+            assign ssum[i*SAW +: SAW] = (b12_first ? {SAW{1'b0}} : sacc_q[i*SAW +: SAW]) + st;
+        end
+    endgenerate
+    reg              c0_valid_q;
+    reg [PIXW-1:0]   c0_pix_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) c0_valid_q <= 1'b0;
+        else if (en_b) c0_valid_q <= b12_valid && b12_last;
+        if (en_b && b12_valid) begin
+            dacc_q <= dsum;
+            sacc_q <= ssum;
+        end
+        if (en_b) c0_pix_q <= b12_pix;
+    end
+
+    // =========================================================================
+    // Segment C: colour
+    // =========================================================================
+    // ---- C1: diffuse diff_c --------------------------------------------------------
+    localparam DDPW = 17 + DAW;
+    wire [3*DDPW-1:0] ddp;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_c1
+            wire unused_v;
+            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(DAW)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(c0_valid_q),
+                .a_i({1'b0, c0_pix_q[PX_DIF +: 16]}), .b_i(dacc_q[i*DAW +: DAW]),
+                .valid_o(unused_v), .p_o(ddp[i*DDPW +: DDPW]));
+        end
+    endgenerate
+    wire             c1_valid;
+    wire [PIXW-1:0]  c1_pix;
+    wire [3*SAW-1:0] c1_spec;
+    csgrt_delay #(.WIDTH(PIXW + 3 * SAW), .STAGES(2)) u_dly_c1 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(c0_valid_q),
+        .data_i({sacc_q, c0_pix_q}), .valid_o(c1_valid), .data_o({c1_spec, c1_pix}));
+
+    // ---- C2: intensity = ambient + rnd(diffuse diff_c, CF) -----------------------------
+    wire [3*IW-1:0] int_d;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_c2
+            wire [DDPW-1:0] pr = ddp[i*DDPW +: DDPW] + {{(DDPW-12){1'b0}}, 1'b1, 11'd0};
+            wire unused_pr = ^{pr[11:0], pr[DDPW-1:12+IW]};
+            assign int_d[i*IW +: IW] = {{(IW-16){1'b0}}, c1_pix[PX_AMB +: 16]} + pr[12 +: IW];
+        end
+    endgenerate
+    reg              c2_valid_q;
+    reg [3*IW-1:0]   c2_int_q;
+    reg [PIXW-1:0]   c2_pix_q;
+    reg [3*SAW-1:0]  c2_spec_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) c2_valid_q <= 1'b0;
+        else if (en_b) c2_valid_q <= c1_valid;
+        if (en_b) begin
+            c2_int_q  <= int_d;
+            c2_pix_q  <= c1_pix;
+            c2_spec_q <= c1_spec;
+        end
+    end
+
+    // ---- C3: pigment_c intensity_c -----------------------------------------------------
+    localparam CPW = 17 + IW;
+    wire [3*CPW-1:0] cp;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_c3
+            wire unused_v;
+            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(IW)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(c2_valid_q),
+                .a_i({1'b0, c2_pix_q[PX_RGB + i*16 +: 16]}), .b_i(c2_int_q[i*IW +: IW]),
+                .valid_o(unused_v), .p_o(cp[i*CPW +: CPW]));
+        end
+    endgenerate
+    wire             c3_valid;
+    wire [PIXW-1:0]  c3_pix;
+    wire [3*SAW-1:0] c3_spec;
+    csgrt_delay #(.WIDTH(PIXW + 3 * SAW), .STAGES(2)) u_dly_c3 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(c2_valid_q),
+        .data_i({c2_spec_q, c2_pix_q}), .valid_o(c3_valid), .data_o({c3_spec, c3_pix}));
+
+    // ---- C4: colour, background for a miss, clamp to [0, 4095] ---------------------------
+    wire [3*12-1:0] idx_d;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_c4
+            wire [CPW-1:0] pr = cp[i*CPW +: CPW] + {{(CPW-12){1'b0}}, 1'b1, 11'd0};
+            wire unused_pr = ^{pr[11:0]};
+            wire [CLW-1:0] col_hit = {{(CLW-(CPW-12)){pr[CPW-1]}}, pr[CPW-1:12]}
+                                   + {{(CLW-SAW){1'b0}}, c3_spec[i*SAW +: SAW]};
+            wire [CLW-1:0] col = c3_pix[PX_HIT] ? col_hit
+                               : {{(CLW-16){1'b0}}, background_i[i*16 +: 16]};
+            assign idx_d[i*12 +: 12] = col[CLW-1] ? 12'd0
+                                     : (col[CLW-2:12] != {(CLW-13){1'b0}}) ? 12'd4095 : col[11:0];
+        end
+    endgenerate
+    reg            c4_valid_q;
+    reg [23:0]     c4_xy_q;
+    reg [35:0]     c4_idx_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) c4_valid_q <= 1'b0;
+        else if (en_b) c4_valid_q <= c3_valid;
+        if (en_b) begin
+            c4_idx_q <= idx_d;
+            c4_xy_q  <= c3_pix[0 +: 24];
+        end
+    end
+    wire unused_c3 = ^c3_pix[PIXW-1:25];
+
+    // ---- C5: sRGB tables ---------------------------------------------------------------
+    wire [23:0] code;
+    reg         c5_valid_q;
+    reg [23:0]  c5_xy_q;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_c5
+            csgrt_srgb #(.LUT_FILE(LUT_FILE)) u_lut (
+                .clk_i(clk_i), .ce_i(en_b), .idx_i(c4_idx_q[i*12 +: 12]), .code_o(code[i*8 +: 8]));
+        end
+    endgenerate
+    always @(posedge clk_i) begin
+        if (!rst_ni) c5_valid_q <= 1'b0;
+        else if (en_b) c5_valid_q <= c4_valid_q;
+        if (en_b) c5_xy_q <= c4_xy_q;
+    end
+
+    // ---- output skid --------------------------------------------------------------------
+    csgrt_skid #(.WIDTH(48)) u_skid_out (
+        .clk_i(clk_i), .rst_ni(rst_ni),
+        .valid_i(c5_valid_q), .ready_o(en_b), .data_i({code, c5_xy_q}),
+        .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_b_o, m_g_o, m_r_o, m_y_o, m_x_o}));
+
+    generate
+        if (BITS < 12 || BITS > 32 || MAX_LIGHTS < 1) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_shade needs 12 <= BITS <= 32 and MAX_LIGHTS >= 1");
+                $finish;
+            end
+        end
+    endgenerate
+
+endmodule
+
+`default_nettype wire
