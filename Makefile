@@ -88,6 +88,20 @@ $(BUILD)/sim/b%/csgrt_sim: $(wildcard rtl/*.v) $(wildcard sim/*.cpp sim/*.h) $(B
 	    --Mdir $(BUILD)/sim/b$*/obj -o $(CURDIR)/$@ $(CURDIR)/rtl/csgrt_top.v $(CURDIR)/sim/sim_main.cpp > $(BUILD)/sim/b$*/build.log 2>&1 \
 	    || { tail -30 $(BUILD)/sim/b$*/build.log; exit 1; }
 
+# the frame testbench: csgrt_top at 16 and 24 bits against the model
+FRAME_BITS := 16 24
+FRAME_BINS := $(FRAME_BITS:%=$(BUILD)/tb/frame%)
+$(BUILD)/tb/frame%: $(wildcard rtl/*.v) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a
+	@mkdir -p $(BUILD)/tb/frame$*.obj
+	@echo "tb: building the frame testbench for BITS=$*"
+	verilator --cc --exe --build -O3 -j 2 --trace-fst -Wall -y rtl --top-module csgrt_top \
+	    -GBITS=$* -GMAX_LEAVES=$(SIM_MAX_LEAVES) -GTREE_HEIGHT=$(SIM_TREE_HEIGHT) \
+	    -MAKEFLAGS OPT_FAST=-O2 -MAKEFLAGS OPT_SLOW=-O1 -MAKEFLAGS OPT_GLOBAL=-O2 \
+	    -CFLAGS "-std=c++17 -O2 -I$(CURDIR)/model -I$(CURDIR)/sim -DFRAME_BITS=$*" \
+	    -LDFLAGS "$(CURDIR)/$(BUILD)/libcsgrt.a $(PKG_LIBS) -lgtest -lgtest_main -pthread" \
+	    --Mdir $(BUILD)/tb/frame$*.obj -o $(CURDIR)/$@ $(CURDIR)/rtl/csgrt_top.v $(CURDIR)/tb/frame/tb_frame.cpp \
+	    > $(BUILD)/tb/frame$*.log 2>&1 || { tail -30 $(BUILD)/tb/frame$*.log; exit 1; }
+
 sim: model $(SIM_BIN)
 	@mkdir -p out/sim
 	@$(BUILD)/csgrt compile $(SCENE) -o $(SIM_OUT).bin --bits $(BITS) --width $(WIDTH) --height $(HEIGHT) \

@@ -13,6 +13,7 @@ BUILD        ?= build
 VERILATOR    ?= verilator
 YOSYS        ?= yosys
 TB_NAMES     := sqrt div isect camera shade
+TB_NAMES     += class_node class_tree walk
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_COMMON    := $(wildcard tb/common/*.h)

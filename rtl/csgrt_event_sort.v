@@ -1,0 +1,242 @@
+`default_nettype none
+// csgrt_event_sort — collects one ray's leaf results (csgrt_isect) and sorts
+// the events ahead of the origin; computes the origin flags. Matches the
+// primary-ray branch of trace_generic() in model/trace.cpp and the key of
+// event_before() (docs/numerics.md section 4).
+//
+// Per leaf result (one transaction, valid/ready):
+//   origin flag of the slot = inside_i toggled once per event behind
+//     (range NegInf, or Finite with t < 0);
+//   events ahead (Finite, t >= 0) go into the fill bank, sorted by the key
+//     {t, tie}, LB = LEAF_BITS:
+//       paper   (ties_regular_i = 0): tie = {0, leaf}
+//       regular (ties_regular_i = 1): tie = entering ? {0, ~leaf} : {1, leaf}
+//     e.g. LB = 6, t equal: regular orders entering leaf 9 (tie 0_110110)
+//     before entering leaf 2 (0_111101) before leaving leaf 2 (1_000010).
+//   PosInf events and events past count_i are dropped.
+//   Slots not written by any leaf of the ray have flag 0.
+//
+// Insertion: the fill bank is a sorted array of MAX_EVENTS cells; an input
+// stage sorts the leaf's (up to) two ahead events into a pair a < b, and
+// every cell compares its word with a and with b (two comparators per cell)
+// and picks its next word from itself, a, its left neighbour, b or the cell
+// two to its left: both events are inserted in one clock.
+//
+// Double buffering: when the fill bank holds a complete ray (its last leaf
+// inserted) and the drain bank is free, the fill bank moves to the drain
+// bank in one clock, and the next ray's first leaf may go into the emptied
+// fill bank in that same clock. The drain bank is a shift register: the
+// walker sees the ray (flags, payload, event count) and the smallest event,
+// pops events one per clock and releases the ray with ray_done_i (it may do
+// so before popping them all). While the fill bank holds a complete ray and
+// the drain bank is busy, the input stage fills and then ready_o goes low.
+//
+// Latency: a leaf result accepted at edge k is in the fill bank after edge
+// k+1; a ray whose last leaf is accepted at edge k is on the drain side
+// (ray_valid_o) after edge k+2 if the drain bank is free.
+// Throughput: one leaf result (up to two events) per clock, no bubble
+// between rays while the walker keeps up. ready_o is a function of
+// registers only.
+module csgrt_event_sort #(
+    parameter BITS          = 24,   // coordinate width B; t is F+2 = B-1 bits
+    parameter MAX_LEAVES    = 64,   // leaves per ray (events: 2*MAX_LEAVES)
+    parameter LEAF_BITS     = 6,    // leaf index width (2^LEAF_BITS >= MAX_LEAVES)
+    parameter TREE_HEIGHT   = 8,    // slot index width; 2^TREE_HEIGHT origin flags
+    parameter PAYLOAD_WIDTH = 1     // per-ray sideband (>= 1)
+) (
+    input  wire                     clk_i,
+    input  wire                     rst_ni,           // synchronous, active low
+    input  wire                     ties_regular_i,   // tie policy (static during a ray)
+    // leaf results
+    input  wire                     valid_i,
+    output wire                     ready_o,
+    input  wire [TREE_HEIGHT-1:0]   slot_i,
+    input  wire [LEAF_BITS-1:0]     leaf_i,
+    input  wire [1:0]               count_i,
+    input  wire [BITS-2:0]          t0_i,
+    input  wire [1:0]               range0_i,
+    input  wire                     enter0_i,
+    input  wire [BITS-2:0]          t1_i,
+    input  wire [1:0]               range1_i,
+    input  wire                     enter1_i,
+    input  wire                     inside_i,         // inside at t = -infinity
+    input  wire                     last_i,           // the ray's last leaf
+    input  wire [PAYLOAD_WIDTH-1:0] payload_i,        // taken from the last leaf
+    // sorted ray (drain bank)
+    output wire                     ray_valid_o,      // a ray is on the drain side
+    output wire [(1<<TREE_HEIGHT)-1:0] ray_flags_o,   // origin flag per slot
+    output wire [PAYLOAD_WIDTH-1:0] ray_payload_o,
+    input  wire                     ray_done_i,       // release the ray (drops unpopped events)
+    output wire                     ev_valid_o,       // an event is left
+    output wire                     ev_last_o,        // it is the ray's last
+    output wire [BITS-2:0]          ev_t_o,
+    output wire [LEAF_BITS-1:0]     ev_leaf_o,
+    output wire [TREE_HEIGHT-1:0]   ev_slot_o,
+    output wire                     ev_entering_o,
+    input  wire                     ev_pop_i
+);
+
+    localparam TW = BITS - 1;                  // t width, F+2
+    localparam UW = TW - 1;                    // t of an event ahead (t >= 0)
+    localparam LB = LEAF_BITS;
+    localparam H  = TREE_HEIGHT;
+    localparam NS = 1 << H;
+    localparam N  = 2 * MAX_LEAVES;            // MAX_EVENTS
+    localparam NB = $clog2(N + 1);             // event count width
+    localparam DW = UW + LB + H + 1;           // stored event {t, leaf, slot, entering}
+    localparam KW = UW + LB + 1;               // key {t, tie}
+    localparam [1:0] R_NEGINF = 2'd0, R_FINITE = 2'd1;
+
+    // key of a stored event under the current policy
+    // (e = {t, leaf, slot, entering}; the slot is not part of the key)
+    function [KW-1:0] key_of(input [UW-1:0] t, input [LB-1:0] leaf, input ent, input reg_ties);
+        begin
+            if (!reg_ties) key_of = {t, 1'b0, leaf};
+            else if (ent)  key_of = {t, 1'b0, ~leaf};
+            else           key_of = {t, 1'b1, leaf};
+        end
+    endfunction
+    `define CSGRT_KEY(e) key_of(e[DW-1 -: UW], e[H+1 +: LB], e[0], ties_regular_i)
+
+    // ---- input stage: behind / ahead, origin flag, the pair sorted ------
+    wire in_fire = valid_i && ready_o;
+    wire ev0 = count_i != 2'd0;
+    wire ev1 = count_i == 2'd2;
+    wire ahead0  = ev0 && range0_i == R_FINITE && !t0_i[TW-1];
+    wire ahead1  = ev1 && range1_i == R_FINITE && !t1_i[TW-1];
+    wire behind0 = ev0 && (range0_i == R_NEGINF || (range0_i == R_FINITE && t0_i[TW-1]));
+    wire behind1 = ev1 && (range1_i == R_NEGINF || (range1_i == R_FINITE && t1_i[TW-1]));
+    wire [DW-1:0] e0 = {t0_i[UW-1:0], leaf_i, slot_i, enter0_i};
+    wire [DW-1:0] e1 = {t1_i[UW-1:0], leaf_i, slot_i, enter1_i};
+    wire          swap = ahead0 && ahead1 && (`CSGRT_KEY(e1) < `CSGRT_KEY(e0));
+
+    reg                     s1_valid_q;
+    reg [1:0]               s1_n_q;        // events ahead: 0, 1 (a) or 2 (a < b)
+    reg [DW-1:0]            s1_a_q, s1_b_q;
+    reg [H-1:0]             s1_slot_q;
+    reg                     s1_flag_q, s1_last_q;
+    reg [PAYLOAD_WIDTH-1:0] s1_pay_q;
+
+    // ---- banks ------------------------------------------------------------
+    reg [N*DW-1:0]          fill_q;        // sorted, cells 0 .. fcnt-1 valid
+    reg [NB-1:0]            fcnt_q;
+    reg                     full_q;        // fill bank holds a complete ray
+    reg [NS-1:0]            fflags_q;
+    reg [PAYLOAD_WIDTH-1:0] fpay_q;
+    reg [N*DW-1:0]          drain_q;       // sorted, cell 0 is the next event
+    reg [NB-1:0]            dcnt_q;
+    reg                     busy_q;        // drain bank holds a ray
+    reg [NS-1:0]            dflags_q;
+    reg [PAYLOAD_WIDTH-1:0] dpay_q;
+
+    wire handover = full_q && !busy_q;
+    wire s1_adv   = s1_valid_q && (!full_q || !busy_q);
+    assign ready_o = !s1_valid_q || !full_q || !busy_q;
+
+    // ---- insertion into the fill bank (emptied on a handover) ------------
+    wire [NB-1:0] base_cnt = handover ? {NB{1'b0}} : fcnt_q;
+    wire [KW-1:0] key_a = `CSGRT_KEY(s1_a_q);
+    wire [KW-1:0] key_b = `CSGRT_KEY(s1_b_q);
+    wire [N-1:0]  lt_a, lt_b;              // cell j holds an event before a / b
+                                           // (a missing event counts as +infinity)
+    wire [N*DW-1:0] ins;
+    genvar j;
+    generate
+        for (j = 0; j < N; j = j + 1) begin : g_cell
+            wire [DW-1:0] cur  = fill_q[j*DW +: DW];
+            wire          here = j < base_cnt;
+            wire [KW-1:0] k    = `CSGRT_KEY(cur);
+            assign lt_a[j] = here && (s1_n_q == 2'd0 || k < key_a);   // no event: a = +inf
+            assign lt_b[j] = here && (s1_n_q != 2'd2 || k < key_b);
+            if (j == 0) begin : g_first
+                assign ins[DW-1:0] = lt_a[0] ? cur : s1_a_q;
+            end else if (j == 1) begin : g_second
+                assign ins[DW +: DW] = lt_a[1] ? cur :
+                                       lt_a[0] ? s1_a_q :
+                                       lt_b[0] ? fill_q[0 +: DW] : s1_b_q;
+            end else begin : g_rest
+                assign ins[j*DW +: DW] = lt_a[j]   ? cur :
+                                         lt_a[j-1] ? s1_a_q :
+                                         lt_b[j-1] ? fill_q[(j-1)*DW +: DW] :
+                                         lt_b[j-2] ? s1_b_q :
+                                                     fill_q[(j-2)*DW +: DW];
+            end
+        end
+    endgenerate
+
+    // ---- drain bank ----------------------------------------------------------
+    wire pop = ev_pop_i && busy_q && dcnt_q != {NB{1'b0}};
+    assign ray_valid_o   = busy_q;
+    assign ray_flags_o   = dflags_q;
+    assign ray_payload_o = dpay_q;
+    assign ev_valid_o    = busy_q && dcnt_q != {NB{1'b0}};
+    assign ev_last_o     = dcnt_q == {{(NB-1){1'b0}}, 1'b1};
+    assign ev_t_o        = {1'b0, drain_q[DW-1 -: UW]};
+    assign ev_leaf_o     = drain_q[H+1 +: LB];
+    assign ev_slot_o     = drain_q[1 +: H];
+    assign ev_entering_o = drain_q[0];
+
+    always @(posedge clk_i) begin
+        // input stage
+        if (in_fire) begin
+            s1_n_q    <= {1'b0, ahead0} + {1'b0, ahead1};
+            s1_a_q    <= (swap || !ahead0) ? e1 : e0;
+            s1_b_q    <= swap ? e0 : e1;
+            s1_slot_q <= slot_i;
+            s1_flag_q <= inside_i ^ behind0 ^ behind1;
+            s1_last_q <= last_i;
+            s1_pay_q  <= payload_i;
+        end
+        // fill bank
+        if (handover) begin
+            fcnt_q   <= {NB{1'b0}};
+            fflags_q <= {NS{1'b0}};
+        end
+        if (s1_adv) begin
+            fill_q   <= ins;
+            fcnt_q   <= base_cnt + {{(NB-2){1'b0}}, s1_n_q};
+            fflags_q[s1_slot_q] <= s1_flag_q;
+            if (s1_last_q) fpay_q <= s1_pay_q;
+        end
+        // drain bank
+        if (handover) begin
+            drain_q  <= fill_q;
+            dcnt_q   <= fcnt_q;
+            dflags_q <= fflags_q;
+            dpay_q   <= fpay_q;
+        end else if (pop) begin
+            drain_q <= {{DW{1'b0}}, drain_q[N*DW-1:DW]};
+            dcnt_q  <= dcnt_q - 1'b1;
+        end
+        if (!rst_ni) begin
+            s1_valid_q <= 1'b0;
+            full_q     <= 1'b0;
+            busy_q     <= 1'b0;
+            fcnt_q     <= {NB{1'b0}};
+            fflags_q   <= {NS{1'b0}};
+        end else begin
+            if (in_fire) s1_valid_q <= 1'b1;
+            else if (s1_adv) s1_valid_q <= 1'b0;
+            if (s1_adv && s1_last_q) full_q <= 1'b1;
+            else if (handover) full_q <= 1'b0;
+            if (handover) busy_q <= 1'b1;
+            else if (ray_done_i) busy_q <= 1'b0;
+        end
+    end
+
+    generate
+        if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_event_sort needs MAX_LEAVES >= 1 and 2^LEAF_BITS >= MAX_LEAVES");
+                $finish;
+            end
+        end
+    endgenerate
+
+    wire unused_in = ^{t0_i[TW-1], t1_i[TW-1], lt_b[N-1]};
+
+`undef CSGRT_KEY
+
+endmodule
+
+`default_nettype wire

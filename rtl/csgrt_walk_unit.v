@@ -1,0 +1,95 @@
+`default_nettype none
+// csgrt_walk_unit — the block between the intersection unit and the shader:
+// csgrt_event_sort (origin flags, events ahead in key order, double
+// buffered) followed by csgrt_walker (validity, classification tree, first
+// BORDER x,y with x != y). Matches trace_primary_fx() of model/trace.cpp
+// given the leaf results of intersect_fx() in candidate order.
+//
+// Input: one leaf result per transaction (see csgrt_event_sort), the ray's
+// last leaf marked, a per-ray payload taken from the last leaf. Output: one
+// record per ray, in ray order (see csgrt_walker). Latency and throughput:
+// event_sort (leaf -> fill bank 2 clocks, handover 1) plus the walker
+// (load 1, one event per clock, TREE_HEIGHT tree stages, output skid 1).
+// Both sides valid/ready; ready_o and valid_o are registers' functions.
+module csgrt_walk_unit #(
+    parameter BITS          = 24,   // coordinate width B; t is B-1 bits
+    parameter MAX_LEAVES    = 64,   // leaves per ray
+    parameter LEAF_BITS     = 6,    // leaf index width (2^LEAF_BITS >= MAX_LEAVES)
+    parameter TREE_HEIGHT   = 8,    // 2^TREE_HEIGHT classification slots
+    parameter MAT_BITS      = 8,    // material index width
+    parameter PAYLOAD_WIDTH = 1     // per-ray sideband (>= 1)
+) (
+    input  wire                     clk_i,
+    input  wire                     rst_ni,           // synchronous, active low
+    // configuration
+    input  wire                     ties_regular_i,   // 0 paper, 1 regular
+    input  wire [2*(1<<TREE_HEIGHT)-1:0]        node_op_i,
+    input  wire [MAT_BITS*(1<<TREE_HEIGHT)-1:0] slot_mat_i,
+    input  wire [(1<<TREE_HEIGHT)-1:0]          slot_used_i,
+    // leaf results (csgrt_isect + the pair's slot, leaf, last, ray payload)
+    input  wire                     valid_i,
+    output wire                     ready_o,
+    input  wire [TREE_HEIGHT-1:0]   slot_i,
+    input  wire [LEAF_BITS-1:0]     leaf_i,
+    input  wire [1:0]               count_i,
+    input  wire [BITS-2:0]          t0_i,
+    input  wire [1:0]               range0_i,
+    input  wire                     enter0_i,
+    input  wire [BITS-2:0]          t1_i,
+    input  wire [1:0]               range1_i,
+    input  wire                     enter1_i,
+    input  wire                     inside_i,
+    input  wire                     last_i,
+    input  wire [PAYLOAD_WIDTH-1:0] payload_i,
+    // hit records
+    output wire                     valid_o,
+    input  wire                     ready_i,
+    output wire                     hit_o,
+    output wire [BITS-2:0]          t_o,
+    output wire [LEAF_BITS-1:0]     leaf_o,
+    output wire [TREE_HEIGHT-1:0]   slot_o,
+    output wire                     entering_o,
+    output wire [MAT_BITS-1:0]      from_o,
+    output wire [MAT_BITS-1:0]      to_o,
+    output wire [(1<<TREE_HEIGHT)-1:0] flags_before_o,
+    output wire [PAYLOAD_WIDTH-1:0] payload_o
+);
+
+    localparam NS = 1 << TREE_HEIGHT;
+
+    wire                     ray_valid, ray_done, ev_valid, ev_last, ev_entering, ev_pop;
+    wire [NS-1:0]            ray_flags;
+    wire [PAYLOAD_WIDTH-1:0] ray_payload;
+    wire [BITS-2:0]          ev_t;
+    wire [LEAF_BITS-1:0]     ev_leaf;
+    wire [TREE_HEIGHT-1:0]   ev_slot;
+
+    csgrt_event_sort #(
+        .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS),
+        .TREE_HEIGHT(TREE_HEIGHT), .PAYLOAD_WIDTH(PAYLOAD_WIDTH)
+    ) u_sort (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ties_regular_i(ties_regular_i),
+        .valid_i(valid_i), .ready_o(ready_o), .slot_i(slot_i), .leaf_i(leaf_i), .count_i(count_i),
+        .t0_i(t0_i), .range0_i(range0_i), .enter0_i(enter0_i),
+        .t1_i(t1_i), .range1_i(range1_i), .enter1_i(enter1_i),
+        .inside_i(inside_i), .last_i(last_i), .payload_i(payload_i),
+        .ray_valid_o(ray_valid), .ray_flags_o(ray_flags), .ray_payload_o(ray_payload), .ray_done_i(ray_done),
+        .ev_valid_o(ev_valid), .ev_last_o(ev_last), .ev_t_o(ev_t), .ev_leaf_o(ev_leaf), .ev_slot_o(ev_slot),
+        .ev_entering_o(ev_entering), .ev_pop_i(ev_pop));
+
+    csgrt_walker #(
+        .BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
+        .MAT_BITS(MAT_BITS), .PAYLOAD_WIDTH(PAYLOAD_WIDTH)
+    ) u_walk (
+        .clk_i(clk_i), .rst_ni(rst_ni),
+        .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
+        .ray_valid_i(ray_valid), .ray_flags_i(ray_flags), .ray_payload_i(ray_payload), .ray_done_o(ray_done),
+        .ev_valid_i(ev_valid), .ev_last_i(ev_last), .ev_t_i(ev_t), .ev_leaf_i(ev_leaf), .ev_slot_i(ev_slot),
+        .ev_entering_i(ev_entering), .ev_pop_o(ev_pop),
+        .valid_o(valid_o), .ready_i(ready_i), .hit_o(hit_o), .t_o(t_o), .leaf_o(leaf_o), .slot_o(slot_o),
+        .entering_o(entering_o), .from_o(from_o), .to_o(to_o), .flags_before_o(flags_before_o),
+        .payload_o(payload_o));
+
+endmodule
+
+`default_nettype wire
