@@ -18,7 +18,7 @@ TEST_SRC   := $(wildcard model/*_test.cpp)
 TEST_OBJ   := $(TEST_SRC:model/%.cpp=$(BUILD)/model/%.o)
 RTL_SRC    := $(wildcard rtl/*.v)
 
-.PHONY: all help deps model render sim test bench-model lint clean
+.PHONY: all help deps model render sim test bench-model lint clean synth
 all: model
 
 # Parameters of the render and simulation targets.
@@ -34,15 +34,18 @@ scene_name = $(basename $(notdir $(SCENE)))
 HW_MAX_LEAVES  := 64
 HW_LEAF_BITS   := 6
 HW_TREE_HEIGHT := 8
+UNITS          ?= 1
 
 help:
 	@echo "make deps    install missing packages (apt-get)"
 	@echo "make model   build build/csgrt, the golden model and scene compiler"
 	@echo "make render [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [WIDTH=320] [HEIGHT=240]"
 	@echo "             render with the golden model to out/model/<scene>.png"
-	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [WIDTH=..] [HEIGHT=..]"
+	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [WIDTH=..] [HEIGHT=..]"
 	@echo "             run the RTL in Verilator; writes out/sim/<scene>.png and compares with the model"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
+	@echo "make synth [BITS=24] [FREQ=100] [BAUD=3000000]"
+	@echo "             ULX3S bitstream (yosys, nextpnr-ecp5, ecppack) to out/synth/; docs/fpga.md"
 	@echo "make lint    verilator --lint-only -Wall and yosys synthesis of every RTL module"
 	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
 
@@ -76,12 +79,13 @@ include tb/tb.mk
 
 # ------------------------------------------- csgrt_top in Verilator
 # $(1): output binary, $(2): BITS, $(3): C++ driver, $(4): extra C++ flags,
-# $(5): extra libraries. One build per configuration, cached under build/.
+# $(5): extra libraries, $(6): NUM_UNITS. One build per configuration,
+# cached under build/.
 define VERILATE_TOP
 	@mkdir -p $(1).obj
 	@echo "verilator: building csgrt_top BITS=$(2) for $(notdir $(1)) (once per configuration)"
 	@verilator --cc --exe --build -O3 -j 2 --trace-fst -Wall -y rtl --top-module csgrt_top \
-	    -GBITS=$(2) -GMAX_LEAVES=$(HW_MAX_LEAVES) -GTREE_HEIGHT=$(HW_TREE_HEIGHT) \
+	    -GBITS=$(2) -GMAX_LEAVES=$(HW_MAX_LEAVES) -GTREE_HEIGHT=$(HW_TREE_HEIGHT) -GNUM_UNITS=$(6) \
 	    -MAKEFLAGS OPT_FAST=-O2 -MAKEFLAGS OPT_SLOW=-O1 -MAKEFLAGS OPT_GLOBAL=-O2 \
 	    -CFLAGS "-std=c++17 -O2 -I$(CURDIR)/model -I$(CURDIR)/sim $(4)" \
 	    -LDFLAGS "$(CURDIR)/$(BUILD)/libcsgrt.a $(PKG_LIBS) $(5) -pthread" \
@@ -89,17 +93,20 @@ define VERILATE_TOP
 	    > $(1).log 2>&1 || { tail -30 $(1).log; exit 1; }
 endef
 
-# the frame testbench: whole frames at 16 and 24 bits against the model
-FRAME_BITS := 16 24
-FRAME_BINS := $(FRAME_BITS:%=$(BUILD)/tb/frame%)
-$(BUILD)/tb/frame%: $(RTL_SRC) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$*,tb/frame/tb_frame.cpp,-DFRAME_BITS=$*,-lgtest -lgtest_main)
+# the frame testbench: whole frames at 16 and 24 bits against the model, and
+# with two intersection lanes
+FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 $(BUILD)/tb/frame24u2
+FRAME_DEPS := $(RTL_SRC) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a
+$(BUILD)/tb/frame%: $(FRAME_DEPS) | deps
+	$(call VERILATE_TOP,$@,$*,tb/frame/tb_frame.cpp,-DFRAME_BITS=$* -DFRAME_UNITS=1,-lgtest -lgtest_main,1)
+$(BUILD)/tb/frame24u2: $(FRAME_DEPS) | deps
+	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=2,-lgtest -lgtest_main,2)
 
 # make sim: the project's main job
-SIM_BIN = $(BUILD)/sim/b$(BITS)/csgrt_sim
+SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
-$(BUILD)/sim/b%/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$*,sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT),)
+$(BUILD)/sim/b$(BITS)u$(UNITS)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
+	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS),,$(UNITS))
 
 sim: model $(SIM_BIN)
 	@mkdir -p out/sim
@@ -107,9 +114,36 @@ sim: model $(SIM_BIN)
 	    --max-leaves $(HW_MAX_LEAVES) --tree-height $(HW_TREE_HEIGHT)
 	@$(SIM_BIN) --scene-image $(SIM_OUT).bin --out $(SIM_OUT).png --ties $(TIES) $(if $(TRACE),--trace $(SIM_OUT).fst)
 
+# ------------------------------------------- FPGA: ULX3S board top, synthesis
+# docs/fpga.md. `make synth [BITS=24] [FREQ=100] [BAUD=3000000]`: yosys
+# synth_ecp5, nextpnr-ecp5, ecppack for the ULX3S (LFE5U-85F); the summary
+# goes to out/synth/report.json; non-zero exit when the clock is missed.
+FREQ ?= 100
+BAUD ?= 3000000
+synth: deps
+	@tools/synth.sh --bits $(BITS) --freq $(FREQ) --baud $(BAUD)
+
+# the board top in Verilator with a UART model (tb/board/): the PLL replaced
+# by tb/board/EHXPLLL.v, BOARD_UART_DIV clocks per UART bit
+BOARD_BITS     := 24
+BOARD_UART_DIV := 4
+BOARD_IDLE     := 2000
+BOARD_BIN      := $(BUILD)/tb/board
+BOARD_SRC      := $(wildcard rtl/board/*.v rtl/board/ulx3s/*.v) tb/board/EHXPLLL.v
+$(BOARD_BIN): $(RTL_SRC) $(BOARD_SRC) tb/board/tb_board.cpp $(BUILD)/libcsgrt.a | deps
+	@mkdir -p $@.obj
+	@echo "verilator: building csgrt_ulx3s BITS=$(BOARD_BITS) for $(notdir $@)"
+	@verilator --cc --exe --build -O3 -j 2 -Wall -y rtl -y rtl/board -y rtl/board/ulx3s -y tb/board \
+	    --top-module csgrt_ulx3s -GBITS=$(BOARD_BITS) -GUART_DIV=$(BOARD_UART_DIV) -GIDLE_CLOCKS=$(BOARD_IDLE) \
+	    -MAKEFLAGS OPT_FAST=-O2 -MAKEFLAGS OPT_SLOW=-O1 -MAKEFLAGS OPT_GLOBAL=-O2 \
+	    -CFLAGS "-std=c++17 -O2 -I$(CURDIR)/model -DBOARD_BITS=$(BOARD_BITS) -DBOARD_UART_DIV=$(BOARD_UART_DIV) -DBOARD_IDLE_CLOCKS=$(BOARD_IDLE)" \
+	    -LDFLAGS "$(CURDIR)/$(BUILD)/libcsgrt.a $(PKG_LIBS) -lgtest -lgtest_main -pthread" \
+	    --Mdir $@.obj -o $(CURDIR)/$@ $(CURDIR)/rtl/board/ulx3s/csgrt_ulx3s.v $(CURDIR)/tb/board/tb_board.cpp \
+	    > $@.log 2>&1 || { tail -30 $@.log; exit 1; }
+
 # ------------------------------------------------------------------ checks
-test: deps $(BUILD)/csgrt $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS)
-	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS)
+test: deps $(BUILD)/csgrt $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN)
+	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN)
 
 lint: deps lint-rtl
 

@@ -1,65 +1,82 @@
 `default_nettype none
-// csgrt_dispatch — turns rays into ray-primitive pairs: for each ray from the
-// camera, one pair per candidate leaf (csgrt_candidates), with the leaf's
-// coefficients and tree slot read from the scene memory, at one pair per
-// clock. Each accepted ray is also pushed, whole, into the ray queue that
-// waits beside the pipeline for the ray's hit record.
+// csgrt_dispatch — turns rays into ray-primitive pairs for NUM_UNITS
+// intersection lanes in lock step: rays are gathered into a group (ray n
+// goes to lane n mod NUM_UNITS), then each candidate leaf of the group
+// (csgrt_candidates) is read once from the scene memory and paired with every
+// lane's ray in the same clock. While a group is issued the next one fills,
+// so the lanes see one pair per clock. Each accepted ray is also pushed,
+// whole, into the ray queue that waits beside the pipeline for its hit.
 //
-// Latency: a candidate's pair is valid 1 clock after its memory read.
-// Handshake: valid/ready everywhere. The pair register advances when it is
-// empty or the intersection unit takes it; pair_ready_i must be a register
-// output (csgrt_isect's is), so no combinational path crosses the unit.
+// A group starts when it is full, or early with the frame's last ray; lanes
+// without a ray in that last group get no pairs.
+//
+// Latency: a candidate's pairs are valid 1 clock after its memory read.
+// Handshake: valid/ready everywhere. The pair registers advance together
+// when every lane holding a pair takes it; pair_ready_i must come from
+// registers (csgrt_isect's ready does), so no combinational path crosses a
+// lane.
 module csgrt_dispatch #(
     parameter BITS        = 24,
     parameter LEAF_BITS   = 6,
     parameter TREE_HEIGHT = 8,
-    parameter RAY_W       = 24 + 6 * BITS     // {x, y, o, d}
+    parameter NUM_UNITS   = 1,                 // intersection lanes
+    parameter RAY_W       = 24 + 6 * BITS      // {x, y, o, d}
 ) (
-    input  wire                    clk_i,
-    input  wire                    rst_ni,
-    input  wire [LEAF_BITS:0]      num_leaves_i,
+    input  wire                       clk_i,
+    input  wire                       rst_ni,
+    input  wire [LEAF_BITS:0]         num_leaves_i,
     // rays from the camera: {x[11:0], y[11:0], o[3*BITS], d[3*BITS]}
-    input  wire                    ray_valid_i,
-    output wire                    ray_ready_o,
-    input  wire [RAY_W-1:0]        ray_i,
-    // the ray queue (to the shading lookup)
-    output wire                    queue_valid_o,
-    input  wire                    queue_ready_i,
-    output wire [RAY_W-1:0]        queue_ray_o,
+    input  wire                       ray_valid_i,
+    output wire                       ray_ready_o,
+    input  wire [RAY_W-1:0]           ray_i,
+    input  wire                       ray_last_i,    // the frame's last ray
+    // the ray queue (to the shading lookup), in ray order
+    output wire                       queue_valid_o,
+    input  wire                       queue_ready_i,
+    output wire [RAY_W-1:0]           queue_ray_o,
     // leaf memory read port (registered: data one clock after the address)
-    output wire [LEAF_BITS-1:0]    leaf_addr_o,
-    input  wire [10*BITS-1:0]      leaf_coef_i,
-    input  wire [TREE_HEIGHT-1:0]  leaf_slot_i,
-    // pairs to the intersection unit
-    output reg                     pair_valid_o,
-    input  wire                    pair_ready_i,
-    output wire [3*BITS-1:0]       pair_o_o,
-    output wire [3*BITS-1:0]       pair_d_o,
-    output wire [10*BITS-1:0]      pair_coef_o,
-    output reg  [LEAF_BITS-1:0]    pair_leaf_o,
-    output wire [TREE_HEIGHT-1:0]  pair_slot_o,
-    output reg                     pair_last_o
+    output wire [LEAF_BITS-1:0]       leaf_addr_o,
+    input  wire [10*BITS-1:0]         leaf_coef_i,
+    input  wire [TREE_HEIGHT-1:0]     leaf_slot_i,
+    // pairs to the lanes; coefficients, leaf, slot and last are shared
+    output reg  [NUM_UNITS-1:0]       pair_valid_o,
+    input  wire [NUM_UNITS-1:0]       pair_ready_i,
+    output wire [NUM_UNITS*3*BITS-1:0] pair_o_o,
+    output wire [NUM_UNITS*3*BITS-1:0] pair_d_o,
+    output wire [10*BITS-1:0]         pair_coef_o,
+    output reg  [LEAF_BITS-1:0]       pair_leaf_o,
+    output wire [TREE_HEIGHT-1:0]     pair_slot_o,
+    output reg                        pair_last_o
 );
-    // ray register: the ray whose candidates are being issued
-    reg [6*BITS-1:0] ray_od_q;       // {o, d} of the current ray
-    reg [6*BITS-1:0] pair_od_q;      // {o, d} of the pair on the output
+    localparam OD = 6 * BITS;                   // {o, d} of one ray
+    localparam CW = (NUM_UNITS > 1) ? $clog2(NUM_UNITS + 1) : 1;
 
-    wire advance = !pair_valid_o || pair_ready_i;
-    wire cand_valid, cand_last;
-    wire [LEAF_BITS-1:0] cand_leaf;
-    wire take = advance && cand_valid;   // a candidate moves into the pair register
+    // ---- the group being filled
+    reg [NUM_UNITS*OD-1:0] fill_od_q;
+    reg [CW-1:0]           fill_count_q;
+    reg                    fill_done_q;         // full, or holds the frame's last ray
+    // ---- the group being issued
+    reg [NUM_UNITS*OD-1:0] iss_od_q;
+    reg [NUM_UNITS-1:0]    iss_lanes_q;         // lanes with a ray in this group
+    // ---- the pair registers
+    reg [NUM_UNITS*OD-1:0] pair_od_q;
 
-    // a new ray starts when the candidate list is free and the queue has room
-    wire start = ray_valid_i && cand_ready_start && queue_room;
-    wire cand_ready_start;
     wire queue_room;
-    assign ray_ready_o = cand_ready_start && queue_room;
+    wire cand_valid, cand_last, cand_ready;
+    wire [LEAF_BITS-1:0] cand_leaf;
+    // all lanes holding a pair take it (or none holds one)
+    wire advance = &(pair_ready_i | ~pair_valid_o);
+    wire take    = advance && cand_valid;          // a candidate moves into the pair registers
+    wire launch  = fill_done_q && cand_ready;       // the filled group starts issuing
+    wire accept  = ray_valid_i && ray_ready_o;
+
+    assign ray_ready_o = !fill_done_q && queue_room;
 
     csgrt_candidates #(.LEAF_BITS(LEAF_BITS)) u_candidates (
         .clk_i, .rst_ni,
         .num_leaves_i,
-        .start_i (start),
-        .ready_o (cand_ready_start),
+        .start_i (launch),
+        .ready_o (cand_ready),
         .valid_o (cand_valid),
         .next_i  (take),
         .leaf_o  (cand_leaf),
@@ -68,7 +85,7 @@ module csgrt_dispatch #(
 
     csgrt_fifo #(.WIDTH(RAY_W), .DEPTH(64)) u_ray_queue (
         .clk_i, .rst_ni,
-        .valid_i (start),
+        .valid_i (accept),
         .ready_o (queue_room),
         .data_i  (ray_i),
         .valid_o (queue_valid_o),
@@ -76,23 +93,44 @@ module csgrt_dispatch #(
         .data_o  (queue_ray_o)
     );
 
-    // While the pair register waits, read its own leaf again, so that the
-    // memory's output register (which is the pair's coefficient field) holds.
+    // While the pair registers wait, read their own leaf again, so that the
+    // memory's output register (the pairs' coefficient field) holds.
     assign leaf_addr_o = advance ? cand_leaf : pair_leaf_o;
-    assign pair_coef_o = leaf_coef_i;    // the memory's output register is the pair's
+    assign pair_coef_o = leaf_coef_i;
     assign pair_slot_o = leaf_slot_i;
-    assign pair_o_o    = pair_od_q[6*BITS-1:3*BITS];
-    assign pair_d_o    = pair_od_q[3*BITS-1:0];
+
+    // lanes that hold a ray of the filled group: 0 .. fill_count-1
+    wire [NUM_UNITS-1:0] fill_lanes;
+    genvar k;
+    generate
+        for (k = 0; k < NUM_UNITS; k = k + 1) begin : g_lane
+            assign pair_o_o[k*3*BITS +: 3*BITS] = pair_od_q[k*OD + 3*BITS +: 3*BITS];
+            assign pair_d_o[k*3*BITS +: 3*BITS] = pair_od_q[k*OD +: 3*BITS];
+            assign fill_lanes[k] = (k < fill_count_q);
+        end
+    endgenerate
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
-            pair_valid_o <= 1'b0;
-        end else if (advance) begin
-            pair_valid_o <= cand_valid;
+            pair_valid_o <= {NUM_UNITS{1'b0}};
+            fill_count_q <= {CW{1'b0}};
+            fill_done_q  <= 1'b0;
+            iss_lanes_q  <= {NUM_UNITS{1'b0}};
+        end else begin
+            if (advance) pair_valid_o <= cand_valid ? iss_lanes_q : {NUM_UNITS{1'b0}};
+            if (launch) begin
+                iss_od_q     <= fill_od_q;
+                iss_lanes_q  <= fill_lanes;
+                fill_count_q <= {CW{1'b0}};
+                fill_done_q  <= 1'b0;
+            end else if (accept) begin
+                fill_od_q[fill_count_q * OD +: OD] <= ray_i[OD-1:0];
+                fill_count_q <= fill_count_q + 1'b1;
+                if ({{(32-CW){1'b0}}, fill_count_q} + 32'd1 == NUM_UNITS || ray_last_i) fill_done_q <= 1'b1;
+            end
         end
-        if (start) ray_od_q <= ray_i[6*BITS-1:0];
         if (take) begin
-            pair_od_q   <= ray_od_q;
+            pair_od_q   <= iss_od_q;
             pair_leaf_o <= cand_leaf;
             pair_last_o <= cand_last;
         end

@@ -19,7 +19,7 @@ module csgrt_top #(
     parameter TREE_HEIGHT   = 8,     // classification tree: 2^TREE_HEIGHT slots
     parameter MAX_LIGHTS    = 8,     // point lights
     parameter MAX_MATERIALS = 255,   // materials besides air
-    parameter NUM_UNITS     = 1,     // intersection lanes (1 today)
+    parameter NUM_UNITS     = 1,     // intersection lanes, each an isect + walk unit
     parameter LUT_FILE      = "rtl/srgb_lut.hex",
     // derived
     parameter LEAF_BITS     = $clog2(MAX_LEAVES),
@@ -46,7 +46,7 @@ module csgrt_top #(
     output wire [23:0] pix_rgb_o,       // {r, g, b}
     // statistics
     output reg  [63:0] stat_cycles_o,
-    output reg  [63:0] stat_pairs_o
+    output reg  [63:0] stat_pairs_o     // pairs issued, summed over the lanes
 );
     localparam RAY_W = 24 + 6 * BITS;          // {x, y, o, d}
     localparam SIDE_W = 1 + TREE_HEIGHT + LEAF_BITS;   // {last, slot, leaf} beside a pair
@@ -102,18 +102,21 @@ module csgrt_top #(
     );
 
     // --------------------------------------------------------------- dispatch
+    localparam U = NUM_UNITS;
     wire                   queue_valid, queue_ready;
     wire [RAY_W-1:0]       queue_ray;
-    wire                   pair_valid, pair_ready, pair_last;
-    wire [3*BITS-1:0]      pair_o, pair_d;
+    wire [U-1:0]           pair_valid, pair_ready;
+    wire                   pair_last;
+    wire [U*3*BITS-1:0]    pair_o, pair_d;
     wire [10*BITS-1:0]     pair_coef;
     wire [LEAF_BITS-1:0]   pair_leaf;
     wire [TREE_HEIGHT-1:0] pair_slot;
 
-    csgrt_dispatch #(.BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT)) u_dispatch (
+    csgrt_dispatch #(.BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT), .NUM_UNITS(U)) u_dispatch (
         .clk_i, .rst_ni,
         .num_leaves_i (num_leaves),
         .ray_valid_i (cam_valid), .ray_ready_o (cam_ready), .ray_i ({cam_x, cam_y, cam_o, cam_d}),
+        .ray_last_i (cam_last),
         .queue_valid_o (queue_valid), .queue_ready_i (queue_ready), .queue_ray_o (queue_ray),
         .leaf_addr_o (leaf_a_addr), .leaf_coef_i (leaf_a_coef), .leaf_slot_i (leaf_a_slot),
         .pair_valid_o (pair_valid), .pair_ready_i (pair_ready),
@@ -121,64 +124,105 @@ module csgrt_top #(
         .pair_leaf_o (pair_leaf), .pair_slot_o (pair_slot), .pair_last_o (pair_last)
     );
 
-    // ---------------------------------------------------- intersection unit
-    // (verilator public_flat_rd: the simulation harness logs these for
-    // mismatch reports, sim/top_sim.h)
-    wire              res_valid /*verilator public_flat_rd*/;
-    wire              res_ready /*verilator public_flat_rd*/;
-    wire [SIDE_W-1:0] res_side /*verilator public_flat_rd*/;
-    wire [1:0]        res_count /*verilator public_flat_rd*/;
-    wire [1:0]        res_range0 /*verilator public_flat_rd*/;
-    wire [1:0]        res_range1 /*verilator public_flat_rd*/;
-    wire [BITS-2:0]   res_t0 /*verilator public_flat_rd*/;
-    wire [BITS-2:0]   res_t1 /*verilator public_flat_rd*/;
-    wire              res_enter0 /*verilator public_flat_rd*/;
-    wire              res_enter1 /*verilator public_flat_rd*/;
-    wire              res_inside /*verilator public_flat_rd*/;
-    wire [BITS-1:0]   res_a;
-    wire [BITS+2:0]   res_b;
-    wire [BITS+5:0]   res_c;
+    // ------------------------------------------- lanes: isect + walk unit
+    // Lane k traces rays k, k+U, k+2U, ... ; the merge below takes their hit
+    // records back in ray order.
+    wire [U-1:0]             w_valid, w_ready, w_hit, w_entering;
+    wire [U*(BITS-1)-1:0]    w_t;
+    wire [U*LEAF_BITS-1:0]   w_leaf;
+    wire [U*8-1:0]           w_from, w_to;
+    wire [U-1:0]             l_res_valid, l_res_ready;
+    wire [U*SIDE_W-1:0]      l_res_side;
+    wire [U*2-1:0]           l_res_count, l_res_range0, l_res_range1;
+    wire [U*(BITS-1)-1:0]    l_res_t0, l_res_t1;
+    wire [U-1:0]             l_res_enter0, l_res_enter1, l_res_inside;
 
-    csgrt_isect #(.BITS(BITS), .LEAF_WIDTH(SIDE_W)) u_isect (
-        .clk_i, .rst_ni,
-        .valid_i (pair_valid), .ready_o (pair_ready),
-        .o_i (pair_o), .d_i (pair_d), .coef_i (pair_coef), .leaf_i ({pair_last, pair_slot, pair_leaf}),
-        .valid_o (res_valid), .ready_i (res_ready), .leaf_o (res_side),
-        .count_o (res_count),
-        .t0_o (res_t0), .range0_o (res_range0), .enter0_o (res_enter0),
-        .t1_o (res_t1), .range1_o (res_range1), .enter1_o (res_enter1),
-        .inside_o (res_inside), .a_o (res_a), .b_o (res_b), .c_o (res_c)
-    );
+    genvar k;
+    generate
+        for (k = 0; k < U; k = k + 1) begin : g_unit
+            wire [BITS-1:0]        res_a;
+            wire [BITS+2:0]        res_b;
+            wire [BITS+5:0]        res_c;
+            wire [TREE_HEIGHT-1:0] w_slot;
+            wire [SLOTS-1:0]       w_flags_before;
+            wire                   w_payload;
 
-    // -------------------------------------------------------------- walk unit
-    wire                   hit_valid /*verilator public_flat_rd*/;
-    wire                   hit_ready /*verilator public_flat_rd*/;
-    wire                   hit_hit /*verilator public_flat_rd*/;
-    wire                   hit_entering /*verilator public_flat_rd*/;
-    wire [BITS-2:0]        hit_t /*verilator public_flat_rd*/;
-    wire [LEAF_BITS-1:0]   hit_leaf /*verilator public_flat_rd*/;
-    wire [TREE_HEIGHT-1:0] hit_slot;
-    wire [7:0]             hit_from /*verilator public_flat_rd*/;
-    wire [7:0]             hit_to /*verilator public_flat_rd*/;
-    wire [SLOTS-1:0]       hit_flags_before;
-    wire                   hit_payload;
+            csgrt_isect #(.BITS(BITS), .LEAF_WIDTH(SIDE_W)) u_isect (
+                .clk_i, .rst_ni,
+                .valid_i (pair_valid[k]), .ready_o (pair_ready[k]),
+                .o_i (pair_o[k*3*BITS +: 3*BITS]), .d_i (pair_d[k*3*BITS +: 3*BITS]), .coef_i (pair_coef),
+                .leaf_i ({pair_last, pair_slot, pair_leaf}),
+                .valid_o (l_res_valid[k]), .ready_i (l_res_ready[k]), .leaf_o (l_res_side[k*SIDE_W +: SIDE_W]),
+                .count_o (l_res_count[2*k +: 2]),
+                .t0_o (l_res_t0[k*(BITS-1) +: BITS-1]), .range0_o (l_res_range0[2*k +: 2]),
+                .enter0_o (l_res_enter0[k]),
+                .t1_o (l_res_t1[k*(BITS-1) +: BITS-1]), .range1_o (l_res_range1[2*k +: 2]),
+                .enter1_o (l_res_enter1[k]),
+                .inside_o (l_res_inside[k]), .a_o (res_a), .b_o (res_b), .c_o (res_c)
+            );
 
-    csgrt_walk_unit #(
-        .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
-        .MAT_BITS(8), .PAYLOAD_WIDTH(1)
-    ) u_walk (
-        .clk_i, .rst_ni,
-        .ties_regular_i, .node_op_i (node_op), .slot_mat_i (slot_material), .slot_used_i (slot_used),
-        .valid_i (res_valid), .ready_o (res_ready),
-        .slot_i (res_side[LEAF_BITS +: TREE_HEIGHT]), .leaf_i (res_side[LEAF_BITS-1:0]),
-        .count_i (res_count),
-        .t0_i (res_t0), .range0_i (res_range0), .enter0_i (res_enter0),
-        .t1_i (res_t1), .range1_i (res_range1), .enter1_i (res_enter1),
-        .inside_i (res_inside), .last_i (res_side[SIDE_W-1]), .payload_i (1'b0),
-        .valid_o (hit_valid), .ready_i (hit_ready), .hit_o (hit_hit), .t_o (hit_t),
-        .leaf_o (hit_leaf), .slot_o (hit_slot), .entering_o (hit_entering),
-        .from_o (hit_from), .to_o (hit_to), .flags_before_o (hit_flags_before), .payload_o (hit_payload)
-    );
+            csgrt_walk_unit #(
+                .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
+                .MAT_BITS(8), .PAYLOAD_WIDTH(1)
+            ) u_walk (
+                .clk_i, .rst_ni,
+                .ties_regular_i, .node_op_i (node_op), .slot_mat_i (slot_material), .slot_used_i (slot_used),
+                .valid_i (l_res_valid[k]), .ready_o (l_res_ready[k]),
+                .slot_i (l_res_side[k*SIDE_W + LEAF_BITS +: TREE_HEIGHT]),
+                .leaf_i (l_res_side[k*SIDE_W +: LEAF_BITS]),
+                .count_i (l_res_count[2*k +: 2]),
+                .t0_i (l_res_t0[k*(BITS-1) +: BITS-1]), .range0_i (l_res_range0[2*k +: 2]),
+                .enter0_i (l_res_enter0[k]),
+                .t1_i (l_res_t1[k*(BITS-1) +: BITS-1]), .range1_i (l_res_range1[2*k +: 2]),
+                .enter1_i (l_res_enter1[k]),
+                .inside_i (l_res_inside[k]), .last_i (l_res_side[k*SIDE_W + SIDE_W-1]), .payload_i (1'b0),
+                .valid_o (w_valid[k]), .ready_i (w_ready[k]), .hit_o (w_hit[k]), .t_o (w_t[k*(BITS-1) +: BITS-1]),
+                .leaf_o (w_leaf[k*LEAF_BITS +: LEAF_BITS]), .slot_o (w_slot), .entering_o (w_entering[k]),
+                .from_o (w_from[8*k +: 8]), .to_o (w_to[8*k +: 8]), .flags_before_o (w_flags_before),
+                .payload_o (w_payload)
+            );
+
+            // Not used yet: the coefficients along the ray (debug), the hit's
+            // tree slot, near-side flags and payload (secondary rays, later).
+            wire unused_lane = &{1'b0, res_a, res_b, res_c, w_slot, w_flags_before, w_payload};
+        end
+    endgenerate
+
+    // Lane 0's results, readable by the simulation harness for mismatch
+    // reports (sim/top_sim.h; with one lane these are all the results).
+    wire              res_valid  /*verilator public_flat_rd*/ = l_res_valid[0];
+    wire              res_ready  /*verilator public_flat_rd*/ = l_res_ready[0];
+    wire [SIDE_W-1:0] res_side   /*verilator public_flat_rd*/ = l_res_side[SIDE_W-1:0];
+    wire [1:0]        res_count  /*verilator public_flat_rd*/ = l_res_count[1:0];
+    wire [1:0]        res_range0 /*verilator public_flat_rd*/ = l_res_range0[1:0];
+    wire [1:0]        res_range1 /*verilator public_flat_rd*/ = l_res_range1[1:0];
+    wire [BITS-2:0]   res_t0     /*verilator public_flat_rd*/ = l_res_t0[BITS-2:0];
+    wire [BITS-2:0]   res_t1     /*verilator public_flat_rd*/ = l_res_t1[BITS-2:0];
+    wire              res_enter0 /*verilator public_flat_rd*/ = l_res_enter0[0];
+    wire              res_enter1 /*verilator public_flat_rd*/ = l_res_enter1[0];
+    wire              res_inside /*verilator public_flat_rd*/ = l_res_inside[0];
+
+    // ---------------------------------------------------------------- merge
+    // Hit records back in ray order: ray n comes from lane n mod U.
+    localparam LW = (U > 1) ? $clog2(U) : 1;
+    reg  [LW-1:0] merge_lane_q;
+    wire [31:0]   merge_lane = {{(32-LW){1'b0}}, merge_lane_q};
+    wire hit_valid    /*verilator public_flat_rd*/ = w_valid[merge_lane];
+    wire hit_ready    /*verilator public_flat_rd*/;
+    wire hit_hit      /*verilator public_flat_rd*/ = w_hit[merge_lane];
+    wire hit_entering /*verilator public_flat_rd*/ = w_entering[merge_lane];
+    wire [BITS-2:0]      hit_t    /*verilator public_flat_rd*/ = w_t[merge_lane*(BITS-1) +: BITS-1];
+    wire [LEAF_BITS-1:0] hit_leaf /*verilator public_flat_rd*/ = w_leaf[merge_lane*LEAF_BITS +: LEAF_BITS];
+    wire [7:0]           hit_from /*verilator public_flat_rd*/ = w_from[merge_lane*8 +: 8];
+    wire [7:0]           hit_to   /*verilator public_flat_rd*/ = w_to[merge_lane*8 +: 8];
+    assign w_ready = hit_ready ? ({{(U-1){1'b0}}, 1'b1} << merge_lane) : {U{1'b0}};
+
+    always @(posedge clk_i) begin
+        if (!rst_ni || start)
+            merge_lane_q <= {LW{1'b0}};
+        else if (hit_valid && hit_ready)
+            merge_lane_q <= (merge_lane + 32'd1 == U) ? {LW{1'b0}} : merge_lane_q + 1'b1;
+    end
 
     // ---------------------------------------------------- shading lookup
     // Joins each hit record with its ray from the queue (both in ray order)
@@ -230,6 +274,13 @@ module csgrt_top #(
     assign pix_rgb_o = {pix_r, pix_g, pix_b};
 
     // ---------------------------------------------------- frame and statistics
+    reg [63:0] pairs_now;   // pairs handed to the lanes in this clock
+    integer u;
+    always @* begin
+        pairs_now = 64'd0;
+        for (u = 0; u < U; u = u + 1) pairs_now = pairs_now + {63'd0, pair_valid[u] && pair_ready[u]};
+    end
+
     wire last_pixel = pix_valid_o && pix_ready_i && pix_x_o == width - 12'd1 && pix_y_o == height - 12'd1;
     always @(posedge clk_i) begin
         if (!rst_ni) begin
@@ -245,7 +296,7 @@ module csgrt_top #(
                 stat_pairs_o  <= 64'd0;
             end else if (busy_o) begin
                 stat_cycles_o <= stat_cycles_o + 64'd1;
-                if (pair_valid && pair_ready) stat_pairs_o <= stat_pairs_o + 64'd1;
+                stat_pairs_o <= stat_pairs_o + pairs_now;
                 if (last_pixel) begin
                     busy_o <= 1'b0;
                     done_o <= 1'b1;
@@ -255,18 +306,8 @@ module csgrt_top #(
     end
 
     // Signals this configuration does not use yet: the camera's own frame
-    // flags (the frame ends at the last pixel), the intersection unit's
-    // coefficients along the ray (debug), the walk unit's tree slot,
-    // entering flag, near-side flags and payload (secondary rays, later),
-    // and the material's reflection and filter fields (effects, later).
-    wire unused_ok = &{1'b0, cam_last, cam_busy, cam_done, res_a, res_b, res_c, hit_slot, hit_entering,
-                       hit_flags_before, hit_payload, mat[111:96], num_lights};
-
-    initial begin
-        if (NUM_UNITS != 1) begin
-            $display("%m: NUM_UNITS = %0d: only one intersection lane is implemented", NUM_UNITS);
-            $finish;
-        end
-    end
+    // flags (the frame ends at the last pixel), the hit's entering flag and
+    // the material's reflection field (effects, later).
+    wire unused_ok = &{1'b0, cam_busy, cam_done, hit_entering, mat[111:96], num_lights};
 endmodule
 `default_nettype wire

@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
     }
     const int W = cs.width, H = cs.height;
 
-    csgrt_sim::TopSim<Vcsgrt_top> sim(cs.fmt.bits, CSGRT_LEAF_BITS, CSGRT_TREE_HEIGHT, trace_path);
+    csgrt_sim::TopSim<Vcsgrt_top> sim(cs.fmt.bits, CSGRT_LEAF_BITS, CSGRT_TREE_HEIGHT, CSGRT_NUM_UNITS, trace_path);
     sim.reset();
     const int err = sim.load(words);
     if (err) {
@@ -133,9 +133,10 @@ int main(int argc, char** argv) {
     std::printf("cycles per pixel        %.2f\n", st.cycles / npix);
     std::printf("pairs issued            %llu (%zu leaves x %d pixels)\n", (unsigned long long)st.pairs,
                 cs.leaves.size(), W * H);
-    std::printf("intersection-unit utilisation  %.3f pairs/cycle (bound: %llu cycles for 1 unit, frame at %.3fx)\n",
-                double(st.pairs) / double(st.cycles), (unsigned long long)st.pairs,
-                double(st.cycles) / double(st.pairs));
+    const double bound = double(st.pairs) / CSGRT_NUM_UNITS;   // cycles if every unit took a pair every clock
+    std::printf("intersection units      %d\n", CSGRT_NUM_UNITS);
+    std::printf("intersection-unit utilisation  %.3f pairs/cycle per unit (bound pairs/units = %.0f cycles, frame at %.3fx)\n",
+                double(st.pairs) / double(st.cycles) / CSGRT_NUM_UNITS, bound, double(st.cycles) / bound);
     std::printf("simulation wall time    %.2f s (%.0f simulated cycles/s)\n", st.wall_seconds,
                 st.total_cycles / st.wall_seconds);
     if (!order_ok) std::printf("pixel order: NOT raster order\n");

@@ -52,8 +52,11 @@ inline int64_t sign_extend(uint64_t v, int bits) {
 template <class Top>
 class TopSim {
   public:
-    TopSim(int bits, int leaf_bits, int tree_height, const std::string& fst_path = "")
-        : bits_(bits), leaf_bits_(leaf_bits), tree_height_(tree_height), ctx_(new VerilatedContext) {
+    // `lanes`: the top's NUM_UNITS. With more than one lane only the hit
+    // records are logged (the results signals show lane 0 alone).
+    TopSim(int bits, int leaf_bits, int tree_height, int lanes = 1, const std::string& fst_path = "")
+        : bits_(bits), leaf_bits_(leaf_bits), tree_height_(tree_height), log_results_(lanes == 1),
+          ctx_(new VerilatedContext) {
         ctx_->randReset(2);
         if (!fst_path.empty()) ctx_->traceEverOn(true);
         top_.reset(new Top(ctx_.get()));
@@ -164,7 +167,7 @@ class TopSim {
     void log_signals() {
         if (!logging_) return;
         auto* r = top_->rootp;
-        if (r->csgrt_top__DOT__res_valid && r->csgrt_top__DOT__res_ready) {
+        if (log_results_ && r->csgrt_top__DOT__res_valid && r->csgrt_top__DOT__res_ready) {
             const uint64_t side = r->csgrt_top__DOT__res_side;
             LeafResultLog lr;
             lr.leaf = int(side & ((1u << leaf_bits_) - 1));
@@ -195,6 +198,7 @@ class TopSim {
 
     static constexpr size_t kKeepRays = 4096;
     int bits_, leaf_bits_, tree_height_;
+    bool log_results_;
     std::unique_ptr<VerilatedContext> ctx_;
     std::unique_ptr<Top> top_;
     std::unique_ptr<VerilatedFstC> fst_;

@@ -45,7 +45,7 @@ FrameResult run_frame(const std::vector<uint32_t>& words, TiePolicy ties, int re
     ro.ties = ties;
     ro.threads = 1;
     const Frame model = render(cs, ro);
-    csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight);
+    csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
     sim.reset();
     FrameResult r;
     if (sim.load(words) != 0) {
@@ -75,9 +75,11 @@ void expect_pixel_exact(const std::string& name, const Scene& scene, int w, int 
                         int ready_percent = 100) {
     const FrameResult r = run_frame(compile_words(scene, w, h), ties, ready_percent);
     const size_t n = size_t(w) * h;
-    std::printf("[ frame    ] %-22s %2d bits, ties %-7s: matched %zu of %zu pixels, %llu cycles, %.3f pairs/cycle\n",
-                name.c_str(), FRAME_BITS, ties == TiePolicy::Paper ? "paper" : "regular", r.matched, n,
-                (unsigned long long)r.stats.cycles, r.stats.cycles ? double(r.stats.pairs) / r.stats.cycles : 0.0);
+    std::printf("[ frame    ] %-22s %2d bits, %d unit(s), ties %-7s: matched %zu of %zu pixels, %llu cycles, "
+                "%.3f pairs/cycle/unit\n",
+                name.c_str(), FRAME_BITS, FRAME_UNITS, ties == TiePolicy::Paper ? "paper" : "regular", r.matched, n,
+                (unsigned long long)r.stats.cycles,
+                r.stats.cycles ? double(r.stats.pairs) / r.stats.cycles / FRAME_UNITS : 0.0);
     EXPECT_TRUE(r.completed) << name << ": the frame did not complete";
     EXPECT_TRUE(r.in_order) << name << ": pixels out of raster order";
     EXPECT_EQ(r.pixels, n) << name << ": pixels lost or duplicated";
@@ -131,7 +133,7 @@ TEST(Frame, RandomBackPressureLosesNothing) {
 TEST(Frame, RefusesAnImageForAnotherConfiguration) {
     std::vector<uint32_t> words = compile_words(scene_file("basic"), 8, 6);
     words[H_BITS] = FRAME_BITS == 24 ? 16 : 24;   // compiled for another width
-    csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight);
+    csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
     sim.reset();
     EXPECT_EQ(sim.load(words), 2);
 }
