@@ -12,18 +12,42 @@ namespace csgrt {
 
 namespace {
 
+// rshift_round on either accumulator type.
+template <typename W>
+W rshift_round_t(W x, int k) {
+    return k <= 0 ? x : (x + (W(1) << (k - 1))) >> k;
+}
+
+// floor(sqrt(n)) as isqrt_fast, on either accumulator type.
+template <typename W>
+W isqrt_fast_t(W n) {
+    if constexpr (sizeof(W) == 8) {
+        if (n <= 0) return 0;
+        W r = W(__builtin_sqrt(double(n)));
+        while (r * r > n) --r;
+        while ((r + 1) * (r + 1) <= n) ++r;
+        return r;
+    } else {
+        return W(isqrt_fast(u128(n)));
+    }
+}
+
 // Fixed-point quotient with saturation: t = n / d (F fraction bits in n
-// already), |t| < 2^(F+1) ulps, i.e. |t| < 2 in scene units.
-void set_t(Event<i64>& e, i128 num, i128 den, int quot_bits) {
-    i128 q;
-    if (sdiv_trunc(num, den, quot_bits, q)) {
-        e.t = i64(q);
+// already), |t| < 2^(F+1) ulps, i.e. |t| < 2 in scene units. Truncation
+// toward zero, as sdiv_trunc.
+template <typename W>
+void set_t(Event<i64>& e, W num, W den, int quot_bits) {
+    const W un = num < 0 ? -num : num, ud = den < 0 ? -den : den;
+    if ((un >> quot_bits) < ud) {
+        const W q = un / ud;
+        e.t = i64(((num < 0) != (den < 0)) ? -q : q);
         e.range = TRange::Finite;
     } else {
         e.range = ((num < 0) != (den < 0)) ? TRange::NegInf : TRange::PosInf;
         e.t = 0;
     }
 }
+
 
 // Two events of one leaf that landed on the same t (a tangent ray, or a
 // chord thinner than one ulp of t) cross nothing: both are dropped. Their
@@ -37,7 +61,11 @@ void drop_equal_pair(LeafEvents<T>& le) {
 
 }  // namespace
 
-LeafEvents<i64> intersect_fx(const Formats& fmt, const std::array<i64, kNumCoefs>& k, const RayFx& r) {
+// The arithmetic is the same for any accumulator type W wide enough for
+// the exact sums and the discriminant: i64 up to 28 bits (the widest value,
+// the discriminant, needs 2B+7 bits signed), i128 above.
+template <typename W>
+LeafEvents<i64> intersect_impl(const Formats& fmt, const std::array<i64, kNumCoefs>& k, const RayFx& r) {
     const int F = fmt.frac;
     const int FC = fmt.coef_frac;
     LeafEvents<i64> le;
@@ -50,26 +78,26 @@ LeafEvents<i64> intersect_fx(const Formats& fmt, const std::array<i64, kNumCoefs
     const i64 p[3] = {k[C_P0], k[C_P1], k[C_P2]};
     i64 u[3], w[3];
     for (int i = 0; i < 3; ++i) {
-        i128 su = 0, sw = i128(p[i]) << F;
+        W su = 0, sw = W(p[i]) << F;
         for (int j = 0; j < 3; ++j) {
-            su += i128(A[i][j]) * r.d[j];
-            sw += i128(A[i][j]) * r.o[j];
+            su += W(A[i][j]) * r.d[j];
+            sw += W(A[i][j]) * r.o[j];
         }
-        u[i] = i64(rshift_round(su, FC));
-        w[i] = i64(rshift_round(sw, FC));
+        u[i] = i64(rshift_round_t<W>(su, FC));
+        w[i] = i64(rshift_round_t<W>(sw, FC));
     }
 
     // Stage 2: coefficients along the ray, Q(t) = a t^2 + 2 b t + c,
     //   a = d.u, b = d.w, c = o.(w + p) + q, each rounded once to F bits.
-    i128 sa = 0, sb = 0, sc = 0;
+    W sa = 0, sb = 0, sc = 0;
     for (int i = 0; i < 3; ++i) {
-        sa += i128(r.d[i]) * u[i];
-        sb += i128(r.d[i]) * w[i];
-        sc += i128(r.o[i]) * (w[i] + i64(rshift_round(p[i], FC - F)));
+        sa += W(r.d[i]) * u[i];
+        sb += W(r.d[i]) * w[i];
+        sc += W(r.o[i]) * (w[i] + i64(rshift_round_t<i64>(p[i], FC - F)));
     }
-    const i64 a = i64(rshift_round(sa, F));
-    const i64 b = i64(rshift_round(sb, F));
-    const i64 c = i64(rshift_round(sc, F)) + i64(rshift_round(k[C_Q], FC - F));
+    const i64 a = i64(rshift_round_t<W>(sa, F));
+    const i64 b = i64(rshift_round_t<W>(sb, F));
+    const i64 c = i64(rshift_round_t<W>(sc, F)) + i64(rshift_round_t<i64>(k[C_Q], FC - F));
     le.a = a;
     le.b = b;
     le.c = c;
@@ -88,17 +116,17 @@ LeafEvents<i64> intersect_fx(const Formats& fmt, const std::array<i64, kNumCoefs
         le.inside_at_minus_inf = b > 0;      // Q -> -inf as t -> -inf
         le.count = 1;
         le.ev[0].entering = b < 0;           // Q decreasing: entering Q <= 0
-        set_t(le.ev[0], -(i128(c) << F), 2 * i128(b), quot_bits);
+        set_t<W>(le.ev[0], -(W(c) << F), 2 * W(b), quot_bits);
         return le;
     }
 
     // Stage 3: discriminant, exact (2F fraction bits).
     le.inside_at_minus_inf = a < 0;
-    const i128 disc = i128(b) * b - i128(a) * c;
+    const W disc = W(b) * b - W(a) * c;
     if (disc < 0) return le;
     const int sqrt_bits = F + 6;              // disc < 2^(2F+12): numerics.md
     if (u128(disc) >> (2 * sqrt_bits)) throw std::logic_error("intersect_fx: discriminant bound violated");
-    const i64 s = i64(isqrt_fast(u128(disc)));   // floor(sqrt), F bits (= isqrt_bitwise(disc, sqrt_bits))
+    const i64 s = i64(isqrt_fast_t<W>(disc));   // floor(sqrt), F bits (= isqrt_bitwise(disc, sqrt_bits))
 
     // Stage 4: roots by the stable formula qq = -(b + sgn(b) s), sgn(0) = +1:
     //   t_first = qq / a, t_second = c / qq.
@@ -109,14 +137,18 @@ LeafEvents<i64> intersect_fx(const Formats& fmt, const std::array<i64, kNumCoefs
     Event<i64>& second = le.ev[1];
     first.entering = (b >= 0);
     second.entering = !(b >= 0);
-    set_t(first, i128(qq) << F, a, quot_bits);
+    set_t<W>(first, W(qq) << F, a, quot_bits);
     if (qq != 0)
-        set_t(second, i128(c) << F, qq, quot_bits);
+        set_t<W>(second, W(c) << F, qq, quot_bits);
     else
         second.t = first.t, second.range = first.range;   // b = s = 0: c = 0, double root at 0
     le.count = 2;
     drop_equal_pair(le);
     return le;
+}
+
+LeafEvents<i64> intersect_fx(const Formats& fmt, const std::array<i64, kNumCoefs>& k, const RayFx& r) {
+    return fmt.bits <= 28 ? intersect_impl<i64>(fmt, k, r) : intersect_impl<i128>(fmt, k, r);
 }
 
 LeafEvents<double> intersect_d(const QuadricD& q, const RayD& r) {
