@@ -4,6 +4,8 @@
 // mirror them line by line.
 #include "render.h"
 
+#include "raytree.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -101,7 +103,7 @@ i64 align(i64 v, int from, int to) {
     return from >= to ? i64(rshift_round(v, from - to)) : v << (to - from);
 }
 
-std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit) {
+std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit, uint32_t lit) {
     if (!hit.hit) return cs.background_fx;
     const int F = cs.fmt.frac;
     const int FC = cs.fmt.coef_frac;
@@ -140,12 +142,14 @@ std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const Tra
     if (nd > 0)
         for (i64& v : n) v = -v;
 
-    // Diffuse and phong from every light (no shadows yet).
+    // Diffuse and phong from every light that reaches the point.
     std::array<i64, 3> diffuse{0, 0, 0}, spec{0, 0, 0};
     const i64 dn = dot_round(ds, n, SF);
     std::array<i64, 3> refl;   // the reflected view direction R = d - 2 (d.n) n
     for (int i = 0; i < 3; ++i) refl[i] = ds[i] - i64(rshift_round(i128(2 * dn) * n[i], SF));
-    for (const LightInfo& li : cs.lights) {
+    for (size_t k = 0; k < cs.lights.size(); ++k) {
+        if (!((lit >> k) & 1)) continue;
+        const LightInfo& li = cs.lights[k];
         std::array<i64, 3> lv;
         for (int i = 0; i < 3; ++i) lv[i] = align(li.pos_fx[i], F, PF) - ps[i];
         const std::array<i64, 3> l = unit_fx(lv, SF, kShadeSqrtStages);
@@ -169,7 +173,8 @@ std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const Tra
     return col;
 }
 
-std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const TraceResult<double>& hit) {
+std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const TraceResult<double>& hit,
+                              uint32_t lit) {
     if (!hit.hit) return {cs.background.x, cs.background.y, cs.background.z};
     const QuadricD& q = cs.leaves[hit.leaf].quad;
     const int mat_index = hit.border.to != 0 ? hit.border.to : hit.border.from;
@@ -182,7 +187,9 @@ std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const Tr
     if (glm::dot(n, d) > 0.0) n = -n;
     const glm::dvec3 refl = d - 2.0 * glm::dot(d, n) * n;
     glm::dvec3 diffuse(0.0), spec(0.0);
-    for (const LightInfo& li : cs.lights) {
+    for (size_t k = 0; k < cs.lights.size(); ++k) {
+        if (!((lit >> k) & 1)) continue;
+        const LightInfo& li = cs.lights[k];
         const glm::dvec3 l = glm::normalize(li.pos - p);
         const double ndl = glm::dot(n, l);
         if (ndl > 0.0) diffuse += li.color * ndl;
@@ -214,6 +221,7 @@ Frame render(const CompiledScene& cs, const RenderOptions& opt) {
     f.rgb.assign(npix * 3, 0);
     f.hit_leaf.assign(npix, -1);
     f.material.assign(npix, 0);
+    const EffectSet fx = opt.effects ? *opt.effects : scene_effects(cs);
 
     auto do_row = [&](int y) {
         for (int x = 0; x < f.width; ++x) {
@@ -221,16 +229,18 @@ Frame render(const CompiledScene& cs, const RenderOptions& opt) {
             int leaf = -1, mat = 0;
             uint8_t rgb[3];
             if (opt.arith == Arith::Fixed) {
-                const PixelTrace pt = render_pixel_fx(cs, x, y, opt.ties, false);
-                for (int c = 0; c < 3; ++c) rgb[c] = pt.rgb[c];
-                if (pt.trace.hit) {
-                    leaf = pt.trace.leaf;
-                    mat = pt.trace.border.to ? pt.trace.border.to : pt.trace.border.from;
+                TraceResult<i64> tr;
+                const std::array<i64, 3> col =
+                    trace_colour_fx(cs, camera_ray_fx(cs, x, y), nullptr, 1, opt.ties, fx, &tr);
+                for (int c = 0; c < 3; ++c) rgb[c] = srgb_encode_fx(col[c]);
+                if (tr.hit) {
+                    leaf = tr.leaf;
+                    mat = tr.border.to ? tr.border.to : tr.border.from;
                 }
             } else {
-                const RayD ray = camera_ray_d(cs, x, y);
-                const TraceResult<double> tr = trace_primary_d(cs, ray, opt.ties);
-                const std::array<double, 3> col = shade_d(cs, ray, tr);
+                TraceResult<double> tr;
+                const std::array<double, 3> col =
+                    trace_colour_d(cs, camera_ray_d(cs, x, y), nullptr, 1, opt.ties, fx, &tr);
                 for (int c = 0; c < 3; ++c) rgb[c] = srgb_encode_d(col[c]);
                 if (tr.hit) {
                     leaf = tr.leaf;

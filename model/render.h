@@ -11,6 +11,8 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace csgrt {
@@ -27,9 +29,23 @@ constexpr int kShadeFrac = 15;
 // sum of squares of a vector with |v_i| < 16 at 12 fraction bits < 2^34
 constexpr int kShadeSqrtStages = 17;
 
+// Effects a render follows (raytree.h): what the scene uses, or fewer (the
+// RTL implements primary rays only so far).
+struct EffectSet {
+    bool shadows = false;      // any light and any object
+    bool specular = false;     // any phong > 0 (part of local shading)
+    bool reflection = false;   // any reflection > 0
+    bool refraction = false;   // any filter > 0
+    int depth = 1;             // ray-tree depth limit (max_trace_level) when rays spawn rays
+    std::string str() const;
+    bool any_secondary() const { return shadows || reflection || refraction; }
+};
+
 struct RenderOptions {
     Arith arith = Arith::Fixed;
     TiePolicy ties = TiePolicy::Paper;
+    // the effects to follow; unset: every effect the scene uses
+    std::optional<EffectSet> effects;
     int threads = 0;                 // 0: all cores
     bool progress = false;           // a progress line on stderr
 };
@@ -61,9 +77,12 @@ i64 pow_fx(i64 x, int n, int F);
 uint8_t srgb_encode_fx(i64 linear);
 uint8_t srgb_encode_d(double linear);
 
-// Shade a primary-ray result: linear colour, kColorFrac fraction bits.
-std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit);
-std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const TraceResult<double>& hit);
+// Local shading of a hit: linear colour, kColorFrac fraction bits. Light k
+// contributes diffuse and phong only if bit k of `lit` is set (shadows).
+std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit,
+                            uint32_t lit = ~0u);
+std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const TraceResult<double>& hit,
+                              uint32_t lit = ~0u);
 
 // The whole frame.
 Frame render(const CompiledScene& cs, const RenderOptions& opt);

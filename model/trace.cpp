@@ -210,9 +210,11 @@ namespace {
 // The walk shared by both arithmetics. `flags` holds the origin flags on
 // entry; events behind the origin have already been applied (primary) or are
 // ignored (secondary).
-template <typename T>
+// `beyond(e, hit_t)`: does the hit point at hit_t already lie beyond the
+// surface of event e (for the look-ahead).
+template <typename T, typename Beyond>
 TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::vector<uint8_t>& flags,
-                    TiePolicy ties, bool diag) {
+                    TiePolicy ties, bool diag, bool lookahead, Beyond beyond) {
     TraceResult<T> res;
     if (diag) res.origin_flags = flags;
     std::sort(ahead.begin(), ahead.end(),
@@ -223,11 +225,14 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
         tree = cs.class_tree;   // copy-assignment reuses this thread's buffers
         tree.reset(flags.data(), cs.leaf_material.data());
     }
-    for (const Event<T>& e : ahead) {
+    for (size_t i = 0; i < ahead.size(); ++i) {
+        const Event<T>& e = ahead[i];
         // Validity check: entering while IN or leaving while OUT is impossible.
         if (bool(flags[e.leaf]) == e.entering) continue;
         // classify(cs.program, flags, ...) evaluated incrementally (ClassTree)
         const Class cl = tree.classify(e.leaf, e.entering);
+        flags[e.leaf] = e.entering;
+        tree.set_flag(e.leaf, e.entering);
         if (cl.kind == Class::BORDER && cl.from != cl.to) {
             res.hit = true;
             res.t = e.t;
@@ -235,19 +240,33 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             res.entering = e.entering;
             res.border = cl;
             res.flags_before = flags;
-            flags[e.leaf] = e.entering;
+            res.flags_before[e.leaf] = !e.entering;
+            // Look-ahead through coincident surfaces behind a transparent
+            // crossing (algorithm.md section 6).
+            for (size_t j = i + 1; lookahead && is_transparent(cs, res.border.to) && j < ahead.size(); ++j) {
+                const Event<T>& n = ahead[j];
+                if (!(n.t == e.t || beyond(n, e.t))) break;
+                if (bool(flags[n.leaf]) == n.entering) continue;   // invalid: skipped
+                const Class c2 = tree.classify(n.leaf, n.entering);
+                flags[n.leaf] = n.entering;
+                tree.set_flag(n.leaf, n.entering);
+                if (c2.kind == Class::BORDER && c2.from != c2.to) res.border.to = c2.to;   // BORDER a1, an
+            }
+            if (res.border.from == res.border.to) {
+                // the run came back to where it started: nothing is crossed
+                res.hit = false;
+                continue;
+            }
             res.flags_after = flags;
             return res;
         }
-        flags[e.leaf] = e.entering;
-        tree.set_flag(e.leaf, e.entering);
     }
     return res;
 }
 
-template <typename T, typename Intersect>
+template <typename T, typename Intersect, typename Beyond>
 TraceResult<T> trace_generic(const CompiledScene& cs, Intersect isect, const std::vector<uint8_t>* inherited,
-                             TiePolicy ties, bool diag) {
+                             TiePolicy ties, bool diag, T t_limit, bool lookahead, Beyond beyond) {
     const size_t n = cs.leaves.size();
     std::vector<uint8_t> flags(n);
     std::vector<Event<T>> ahead;
@@ -258,32 +277,98 @@ TraceResult<T> trace_generic(const CompiledScene& cs, Intersect isect, const std
         for (int i = 0; i < le.count; ++i) {
             Event<T> e = le.ev[i];
             e.leaf = uint16_t(l);
-            if (e.ahead())
-                ahead.push_back(e);
+            if (e.ahead()) {
+                if (!(t_limit > T(0)) || e.t < t_limit) ahead.push_back(e);
+            }
             else if (!inherited && e.behind())
                 f = !f;   // each crossing behind the origin toggles the state
         }
         flags[l] = f;
     }
-    return walk<T>(cs, ahead, flags, ties, diag);
+    return walk<T>(cs, ahead, flags, ties, diag, lookahead, beyond);
 }
 
 }  // namespace
 
-TraceResult<i64> trace_primary_fx(const CompiledScene& cs, const RayFx& ray, TiePolicy ties, bool diag) {
-    return trace_generic<i64>(
-        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, nullptr, ties, diag);
+i64 quadric_at_fx(const Formats& fmt, const std::array<i64, kNumCoefs>& k, const std::array<i64, 3>& o) {
+    const int F = fmt.frac, FC = fmt.coef_frac;
+    const i64 A[3][3] = {{k[C_A00], k[C_A01], k[C_A02]},
+                         {k[C_A01], k[C_A11], k[C_A12]},
+                         {k[C_A02], k[C_A12], k[C_A22]}};
+    i128 sc = 0;
+    for (int i = 0; i < 3; ++i) {
+        i128 sw = i128(k[C_P0 + i]) << F;
+        for (int j = 0; j < 3; ++j) sw += i128(A[i][j]) * o[j];
+        const i64 w = i64(rshift_round(sw, FC));
+        sc += i128(o[i]) * (w + i64(rshift_round(k[C_P0 + i], FC - F)));
+    }
+    return i64(rshift_round(sc, F)) + i64(rshift_round(k[C_Q], FC - F));
 }
 
-TraceResult<double> trace_primary_d(const CompiledScene& cs, const RayD& ray, TiePolicy ties, bool diag) {
+bool hit_point_fx(const Formats& fmt, const RayFx& ray, i64 t, std::array<i64, 3>& p) {
+    const i64 limit = i64(4) << fmt.frac;
+    bool inside = true;
+    for (int i = 0; i < 3; ++i) {
+        p[i] = ray.o[i] + i64(rshift_round(i128(t) * ray.d[i], fmt.frac));
+        inside = inside && p[i] >= -limit && p[i] < limit;
+    }
+    return inside;
+}
+
+bool is_transparent(const CompiledScene& cs, int material) {
+    return material == 0 || (material < int(cs.materials.size()) && cs.materials[material].filter > 0);
+}
+
+namespace {
+
+// "The hit point already lies beyond the next surface": inside it already
+// for an entering event (Q(p) <= 0), outside it already for a leaving one.
+auto beyond_fx(const CompiledScene& cs, const RayFx& ray) {
+    return [&cs, &ray](const Event<i64>& n, i64 hit_t) {
+        std::array<i64, 3> p;
+        hit_point_fx(cs.fmt, ray, hit_t, p);
+        const i64 q = quadric_at_fx(cs.fmt, cs.leaves[n.leaf].coef, p);
+        return n.entering ? q <= 0 : q > 0;
+    };
+}
+
+auto beyond_d(const CompiledScene& cs, const RayD& ray) {
+    return [&cs, &ray](const Event<double>& n, double hit_t) {
+        glm::dvec3 p;
+        for (int i = 0; i < 3; ++i) p[i] = ray.o[i] + hit_t * ray.d[i];
+        const double q = eval_quadric(cs.leaves[n.leaf].quad, p);
+        return n.entering ? q <= 0.0 : q > 0.0;
+    };
+}
+
+}  // namespace
+
+TraceResult<i64> trace_primary_fx(const CompiledScene& cs, const RayFx& ray, TiePolicy ties, bool diag,
+                                  const TraceOptions& opt) {
+    return trace_generic<i64>(
+        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, nullptr, ties, diag,
+        opt.t_limit_fx, opt.lookahead, beyond_fx(cs, ray));
+}
+
+TraceResult<double> trace_primary_d(const CompiledScene& cs, const RayD& ray, TiePolicy ties, bool diag,
+                                    const TraceOptions& opt) {
     return trace_generic<double>(
-        cs, [&](size_t l) { return intersect_d(cs.leaves[l].quad, ray); }, nullptr, ties, diag);
+        cs, [&](size_t l) { return intersect_d(cs.leaves[l].quad, ray); }, nullptr, ties, diag, opt.t_limit_d,
+        opt.lookahead, beyond_d(cs, ray));
 }
 
 TraceResult<i64> trace_secondary_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>& flags,
-                                    TiePolicy ties, bool diag) {
+                                    TiePolicy ties, bool diag, const TraceOptions& opt) {
     return trace_generic<i64>(
-        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, &flags, ties, diag);
+        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, &flags, ties, diag,
+        opt.t_limit_fx, opt.lookahead, beyond_fx(cs, ray));
+}
+
+TraceResult<double> trace_secondary_d(const CompiledScene& cs, const RayD& ray, const std::vector<uint8_t>& flags,
+                                      TiePolicy ties, bool diag, const TraceOptions& opt) {
+    return trace_generic<double>(
+        cs, [&](size_t l) { return intersect_d(cs.leaves[l].quad, ray); }, &flags, ties, diag, opt.t_limit_d,
+        opt.lookahead, beyond_d(cs, ray));
 }
 
 }  // namespace csgrt

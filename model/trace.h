@@ -75,16 +75,47 @@ struct TraceResult {
     std::vector<uint8_t> origin_flags;
 };
 
+// Optional behaviour of a trace (secondary rays, effects):
+//  - t_limit: events at t >= t_limit are never reached (a shadow ray stops
+//    at its light); 0 means no limit beyond the format's.
+//  - lookahead: after a hit whose far side is transparent (air or a
+//    material with filter > 0), cross the following coincident surfaces too
+//    (algorithm.md section 6): while the next event has the same t, or the
+//    hit point already lies beyond that next surface (exact sign of its
+//    quadric at the hit point), apply the validity check, classify, toggle;
+//    stop at an opaque material. The hit then reads BORDER a1, an and
+//    flags_after are the flags beyond the whole run.
+struct TraceOptions {
+    i64 t_limit_fx = 0;
+    double t_limit_d = 0.0;
+    bool lookahead = false;
+};
+
 // Trace a primary ray: origin flags from the state at -infinity toggled by
 // the events behind the origin. With keep_diagnostics the result carries
 // the event list and origin flags.
 TraceResult<i64> trace_primary_fx(const CompiledScene& cs, const RayFx& ray, TiePolicy ties,
-                                  bool keep_diagnostics = false);
+                                  bool keep_diagnostics = false, const TraceOptions& opt = {});
 TraceResult<double> trace_primary_d(const CompiledScene& cs, const RayD& ray, TiePolicy ties,
-                                    bool keep_diagnostics = false);
+                                    bool keep_diagnostics = false, const TraceOptions& opt = {});
 
-// Trace a secondary ray that inherits `flags` (one per leaf).
+// Trace a secondary ray that inherits `flags` (one per leaf): events behind
+// its origin are ignored.
 TraceResult<i64> trace_secondary_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>& flags,
-                                    TiePolicy ties, bool keep_diagnostics = false);
+                                    TiePolicy ties, bool keep_diagnostics = false, const TraceOptions& opt = {});
+TraceResult<double> trace_secondary_d(const CompiledScene& cs, const RayD& ray, const std::vector<uint8_t>& flags,
+                                      TiePolicy ties, bool keep_diagnostics = false, const TraceOptions& opt = {});
+
+// Q(p) of one leaf at a point (F fraction bits), computed as c is in
+// intersect_fx with the origin at p: its sign is exact for the rounded
+// coefficients along any ray from p.
+i64 quadric_at_fx(const Formats& fmt, const std::array<i64, kNumCoefs>& coef, const std::array<i64, 3>& p);
+
+// The hit point o + t d (F fraction bits); false when a coordinate leaves
+// the range [-4, 4) (such a hit counts as no hit: numerics.md section 7).
+bool hit_point_fx(const Formats& fmt, const RayFx& ray, i64 t, std::array<i64, 3>& p);
+
+// Whether a material lets a ray through: air, or filter > 0.
+bool is_transparent(const CompiledScene& cs, int material);
 
 }  // namespace csgrt

@@ -4,6 +4,7 @@
 #include "Vcsgrt_top.h"
 #include "Vcsgrt_top___024root.h"   // the signals the harness logs
 #include "image.h"
+#include "raytree.h"
 #include "render.h"
 #include "report.h"
 #include "scene_image.h"
@@ -65,6 +66,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     const int W = cs.width, H = cs.height;
+    std::printf("scene effects: %s; this RTL implements: %s\n", scene_effects(cs).str().c_str(),
+                rtl_effects(cs).str().c_str());
 
     csgrt_sim::TopSim<Vcsgrt_top> sim(cs.fmt.bits, CSGRT_LEAF_BITS, CSGRT_TREE_HEIGHT, CSGRT_NUM_UNITS, trace_path);
     sim.reset();
@@ -88,6 +91,7 @@ int main(int argc, char** argv) {
         RenderOptions ro;
         ro.ties = ties;
         ro.threads = 1;
+        ro.effects = rtl_effects(cs);   // the effects this RTL implements
         model = render(cs, ro);
         model_s = seconds_since(m0);
     }

@@ -7,6 +7,7 @@
 #include "Vcsgrt_top___024root.h"
 #include "compile.h"
 #include "parse.h"
+#include "raytree.h"
 #include "render.h"
 #include "report.h"
 #include "scene_image.h"
@@ -44,6 +45,7 @@ FrameResult run_frame(const std::vector<uint32_t>& words, TiePolicy ties, int re
     RenderOptions ro;
     ro.ties = ties;
     ro.threads = 1;
+    ro.effects = rtl_effects(cs);   // the effects this RTL implements
     const Frame model = render(cs, ro);
     csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
     sim.reset();

@@ -1,0 +1,249 @@
+// raytree.cpp — shadows, reflection and refraction (raytree.h). The fixed
+// functions use the geometry formats of docs/numerics.md (F fraction bits for
+// points and directions) and round only with rnd, isqrt and div; docs/effects.md
+// lists each step. The double functions follow the same algorithm.
+#include "raytree.h"
+
+#include <cmath>
+
+namespace csgrt {
+
+namespace {
+
+constexpr int CF = kColorFrac;
+constexpr i64 kColorOne = i64(1) << kColorFrac;
+
+// Square-root stages for unit_fx of geometry vectors with |v_i| < 128
+// (F fraction bits): sum v^2 < 3 * 2^14 * 2^2F < 2^(2F+16).
+int geo_sqrt_stages(int F) { return F + 8; }
+
+i64 dot_fx(const std::array<i64, 3>& a, const std::array<i64, 3>& b, int F) {
+    i128 s = 0;
+    for (int i = 0; i < 3; ++i) s += i128(a[i]) * b[i];
+    return i64(rshift_round(s, F));
+}
+
+// The surface normal at p (F bits, unit), turned to face the ray.
+std::array<i64, 3> normal_fx(const CompiledScene& cs, int leaf, const std::array<i64, 3>& p,
+                             const std::array<i64, 3>& d) {
+    const int F = cs.fmt.frac, FC = cs.fmt.coef_frac;
+    const auto& k = cs.leaves[leaf].coef;
+    const i64 A[3][3] = {{k[C_A00], k[C_A01], k[C_A02]},
+                         {k[C_A01], k[C_A11], k[C_A12]},
+                         {k[C_A02], k[C_A12], k[C_A22]}};
+    std::array<i64, 3> g;
+    for (int i = 0; i < 3; ++i) {
+        i128 s = i128(k[C_P0 + i]) << F;
+        for (int j = 0; j < 3; ++j) s += i128(A[i][j]) * p[j];
+        g[i] = i64(rshift_round(s, FC));   // |g_i| < 16
+    }
+    std::array<i64, 3> n = unit_fx(g, F, geo_sqrt_stages(F));
+    i128 nd = 0;
+    for (int i = 0; i < 3; ++i) nd += i128(n[i]) * d[i];
+    if (nd > 0)
+        for (i64& v : n) v = -v;
+    return n;
+}
+
+// d - 2 (d.n) n, made unit.
+std::array<i64, 3> reflect_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, int F) {
+    const i64 dn = dot_fx(d, n, F);
+    std::array<i64, 3> r;
+    for (int i = 0; i < 3; ++i) r[i] = d[i] - i64(rshift_round(i128(2 * dn) * n[i], F));
+    return unit_fx(r, F, geo_sqrt_stages(F));
+}
+
+// Snell's law from medium ior1 into ior2 (kColorFrac bits); false on total
+// internal reflection.
+bool refract_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, i64 ior1, i64 ior2, int F,
+                std::array<i64, 3>& out) {
+    const i64 one = i64(1) << F;
+    i128 eta128 = 0;
+    sdiv_trunc(i128(ior1) << F, ior2, F + 7, eta128);   // iors in [1/4, 16): eta < 64
+    const i64 eta = i64(eta128);
+    const i64 cos_i = -dot_fx(d, n, F);                 // n faces the ray: cos_i >= 0
+    const i64 sin2 = one - i64(rshift_round(i128(cos_i) * cos_i, F));
+    const i64 k = one - i64(rshift_round(i128(rshift_round(i128(eta) * eta, F)) * sin2, F));
+    if (k < 0) return false;
+    const i64 sk = i64(isqrt_fast(u128(k) << F));      // sqrt(k), F bits
+    const i64 a = i64(rshift_round(i128(eta) * cos_i, F)) - sk;
+    std::array<i64, 3> t;
+    for (int i = 0; i < 3; ++i)
+        t[i] = i64(rshift_round(i128(eta) * d[i], F)) + i64(rshift_round(i128(a) * n[i], F));
+    out = unit_fx(t, F, geo_sqrt_stages(F));
+    return true;
+}
+
+i64 ior_of(const CompiledScene& cs, int material) {
+    return material == 0 ? kColorOne : cs.materials[material].ior;
+}
+
+}  // namespace
+
+std::string EffectSet::str() const {
+    std::string s;
+    auto add = [&](bool on, const char* name) {
+        if (on) s += (s.empty() ? "" : ", ") + std::string(name);
+    };
+    add(shadows, "shadows");
+    add(specular, "specular");
+    add(reflection, "reflection");
+    add(refraction, "refraction");
+    if (reflection || refraction) s += ", depth " + std::to_string(depth);
+    return s.empty() ? "none" : s;
+}
+
+EffectSet scene_effects(const CompiledScene& cs) {
+    EffectSet e;
+    e.shadows = !cs.lights.empty() && !cs.leaves.empty();
+    for (size_t m = 1; m < cs.materials.size(); ++m) {
+        e.specular = e.specular || cs.materials[m].phong > 0;
+        e.reflection = e.reflection || cs.materials[m].reflection > 0;
+        e.refraction = e.refraction || cs.materials[m].filter > 0;
+    }
+    e.depth = (e.reflection || e.refraction) ? cs.max_trace_level : 1;
+    return e;
+}
+
+EffectSet rtl_effects(const CompiledScene& cs) {
+    EffectSet e;
+    e.specular = scene_effects(cs).specular;
+    return e;
+}
+
+std::array<i64, 3> trace_colour_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>* flags,
+                                   int depth, TiePolicy ties, const EffectSet& fx, TraceResult<i64>* first) {
+    const int F = cs.fmt.frac;
+    TraceOptions topt;
+    topt.lookahead = fx.refraction;
+    const TraceResult<i64> tr =
+        flags ? trace_secondary_fx(cs, ray, *flags, ties, false, topt) : trace_primary_fx(cs, ray, ties, false, topt);
+    if (first) *first = tr;
+    std::array<i64, 3> p;
+    if (!tr.hit || !hit_point_fx(cs.fmt, ray, tr.t, p)) return cs.background_fx;
+    const int mat = tr.border.to ? tr.border.to : tr.border.from;
+    const MaterialInfo& m = cs.materials[mat];
+    const bool spawn = fx.reflection || fx.refraction || fx.shadows;
+    const std::array<i64, 3> n = spawn ? normal_fx(cs, tr.leaf, p, ray.d) : std::array<i64, 3>{};
+
+    // Shadows: a ray from the hit point towards each light, with the flags
+    // of the near side; any surface before the light blocks it (opaque
+    // shadows, docs/effects.md). A light behind the surface leaves it unlit.
+    uint32_t lit = ~0u;
+    if (fx.shadows) {
+        for (size_t k = 0; k < cs.lights.size(); ++k) {
+            std::array<i64, 3> lv;
+            for (int i = 0; i < 3; ++i) lv[i] = cs.lights[k].pos_fx[i] - p[i];
+            i128 nl = 0;
+            for (int i = 0; i < 3; ++i) nl += i128(n[i]) * lv[i];
+            if (nl <= 0) {
+                lit &= ~(1u << k);
+                continue;
+            }
+            RayFx shadow;
+            shadow.o = p;
+            shadow.d = unit_fx(lv, F, geo_sqrt_stages(F));
+            u128 len2 = 0;
+            for (int i = 0; i < 3; ++i) len2 += u128(i128(lv[i]) * lv[i]);
+            TraceOptions so;
+            so.t_limit_fx = i64(isqrt_fast(len2));   // distance to the light, F bits
+            if (trace_secondary_fx(cs, shadow, tr.flags_before, ties, false, so).hit) lit &= ~(1u << k);
+        }
+    }
+    const std::array<i64, 3> local = shade_fx(cs, ray, tr, lit);
+    std::array<i64, 3> col = local;
+    if (depth >= cs.max_trace_level) return col;
+
+    // Refraction: the transmitted ray takes the far side's flags.
+    if (fx.refraction && m.filter > 0) {
+        RayFx child;
+        child.o = p;
+        const std::vector<uint8_t>* child_flags = &tr.flags_after;
+        if (!refract_fx(ray.d, n, ior_of(cs, tr.border.from), ior_of(cs, tr.border.to), F, child.d)) {
+            child.d = reflect_fx(ray.d, n, F);   // total internal reflection
+            child_flags = &tr.flags_before;
+        }
+        const std::array<i64, 3> tc = trace_colour_fx(cs, child, child_flags, depth + 1, ties, fx);
+        for (int c = 0; c < 3; ++c) {
+            const i64 filt = i64(rshift_round(i128(m.filter) * m.rgb[c], CF));
+            col[c] = i64(rshift_round(i128(kColorOne - m.filter) * local[c], CF)) +
+                     i64(rshift_round(i128(filt) * tc[c], CF));
+        }
+    }
+    // Mirror reflection: the reflected ray takes the near side's flags.
+    if (fx.reflection && m.reflection > 0) {
+        RayFx child;
+        child.o = p;
+        child.d = reflect_fx(ray.d, n, F);
+        const std::array<i64, 3> rc = trace_colour_fx(cs, child, &tr.flags_before, depth + 1, ties, fx);
+        for (int c = 0; c < 3; ++c) col[c] += i64(rshift_round(i128(m.reflection) * rc[c], CF));
+    }
+    return col;
+}
+
+std::array<double, 3> trace_colour_d(const CompiledScene& cs, const RayD& ray, const std::vector<uint8_t>* flags,
+                                     int depth, TiePolicy ties, const EffectSet& fx, TraceResult<double>* first) {
+    TraceOptions topt;
+    topt.lookahead = fx.refraction;
+    const TraceResult<double> tr =
+        flags ? trace_secondary_d(cs, ray, *flags, ties, false, topt) : trace_primary_d(cs, ray, ties, false, topt);
+    if (first) *first = tr;
+    const glm::dvec3 o(ray.o[0], ray.o[1], ray.o[2]), d(ray.d[0], ray.d[1], ray.d[2]);
+    const glm::dvec3 p = o + tr.t * d;
+    const bool in_range = std::fabs(p.x) < 4.0 && std::fabs(p.y) < 4.0 && std::fabs(p.z) < 4.0;
+    if (!tr.hit || !in_range) return {cs.background.x, cs.background.y, cs.background.z};
+    const int mat = tr.border.to ? tr.border.to : tr.border.from;
+    const MaterialInfo& m = cs.materials[mat];
+    const QuadricD& q = cs.leaves[tr.leaf].quad;
+    glm::dvec3 n = q.A * p + q.p;
+    n = glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0.0);
+    if (glm::dot(n, d) > 0.0) n = -n;
+    auto to_ray = [](const glm::dvec3& org, const glm::dvec3& dir) {
+        RayD r;
+        for (int i = 0; i < 3; ++i) r.o[i] = org[i], r.d[i] = dir[i];
+        return r;
+    };
+
+    uint32_t lit = ~0u;
+    if (fx.shadows) {
+        for (size_t k = 0; k < cs.lights.size(); ++k) {
+            const glm::dvec3 lv = cs.lights[k].pos - p;
+            if (glm::dot(n, lv) <= 0.0) {
+                lit &= ~(1u << k);
+                continue;
+            }
+            TraceOptions so;
+            so.t_limit_d = glm::length(lv);
+            if (trace_secondary_d(cs, to_ray(p, glm::normalize(lv)), tr.flags_before, ties, false, so).hit)
+                lit &= ~(1u << k);
+        }
+    }
+    const std::array<double, 3> local = shade_d(cs, ray, tr, lit);
+    std::array<double, 3> col = local;
+    if (depth >= cs.max_trace_level) return col;
+    const glm::dvec3 refl = glm::normalize(d - 2.0 * glm::dot(d, n) * n);
+    if (fx.refraction && m.filter > 0) {
+        const double ior1 = tr.border.from ? cs.materials[tr.border.from].interior.ior : 1.0;
+        const double ior2 = tr.border.to ? cs.materials[tr.border.to].interior.ior : 1.0;
+        const double eta = ior1 / ior2, cos_i = -glm::dot(d, n);
+        const double k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+        const std::vector<uint8_t>* child_flags = &tr.flags_after;
+        glm::dvec3 dir;
+        if (k < 0.0) {
+            dir = refl;
+            child_flags = &tr.flags_before;
+        } else {
+            dir = glm::normalize(eta * d + (eta * cos_i - std::sqrt(k)) * n);
+        }
+        const std::array<double, 3> tc = trace_colour_d(cs, to_ray(p, dir), child_flags, depth + 1, ties, fx);
+        const double f = m.pigment.filter;
+        for (int c = 0; c < 3; ++c) col[c] = (1.0 - f) * local[c] + f * m.pigment.rgb[c] * tc[c];
+    }
+    if (fx.reflection && m.finish.reflection > 0.0) {
+        const std::array<double, 3> rc = trace_colour_d(cs, to_ray(p, refl), &tr.flags_before, depth + 1, ties, fx);
+        for (int c = 0; c < 3; ++c) col[c] += m.finish.reflection * rc[c];
+    }
+    return col;
+}
+
+}  // namespace csgrt

@@ -1,0 +1,35 @@
+// raytree.h — secondary rays: shadows, mirror reflection and refraction, with
+// no epsilon and no origin offset. A child ray starts at the rounded hit
+// point and inherits its parent's leaf flags: the near side's (before the
+// crossing) for shadow and reflected rays, the far side's (after it, and
+// after the coincident-surface look-ahead) for transmitted rays. The
+// validity check alone rejects the surface the ray starts on
+// (docs/effects.md).
+#pragma once
+
+#include "compile.h"
+#include "render.h"
+#include "trace.h"
+
+#include <array>
+#include <string>
+
+namespace csgrt {
+
+// The effects a scene uses (EffectSet is declared in render.h).
+EffectSet scene_effects(const CompiledScene& cs);
+
+// The effects the RTL implements today: primary rays with local shading
+// (phong included). Co-simulation renders the model with these.
+EffectSet rtl_effects(const CompiledScene& cs);
+
+// Colour of a ray (linear, kColorFrac fraction bits, not yet saturated),
+// following shadows, reflection and refraction as `fx` allows.
+// `flags` is null for a primary ray.
+std::array<i64, 3> trace_colour_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>* flags,
+                                   int depth, TiePolicy ties, const EffectSet& fx, TraceResult<i64>* first = nullptr);
+std::array<double, 3> trace_colour_d(const CompiledScene& cs, const RayD& ray, const std::vector<uint8_t>* flags,
+                                     int depth, TiePolicy ties, const EffectSet& fx,
+                                     TraceResult<double>* first = nullptr);
+
+}  // namespace csgrt
