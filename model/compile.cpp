@@ -418,6 +418,9 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
         m.phong = quantise(m.finish.phong, CF, CI, where, "finish phong");
         m.reflection = quantise(m.finish.reflection, CF, CI, where, "finish reflection");
         m.ior = quantise(m.interior.ior, CF, CI, where, "interior ior");
+        if (m.interior.ior < 0.25)
+            throw SceneError(where, "interior ior " + fmt_double(m.interior.ior) +
+                                        " is below 0.25, the smallest index the refraction unit takes");
         m.phong_size = int(std::lround(m.finish.phong_size));
         if (m.phong_size < 1 || m.phong_size > 1023)
             throw SceneError(where, "finish phong_size " + fmt_double(m.finish.phong_size) +

@@ -13,17 +13,16 @@ namespace {
 constexpr int CF = kColorFrac;
 constexpr i64 kColorOne = i64(1) << kColorFrac;
 
-// Square-root stages for unit_fx of geometry vectors with |v_i| < 128
-// (F fraction bits): sum v^2 < 3 * 2^14 * 2^2F < 2^(2F+16).
-int geo_sqrt_stages(int F) { return F + 8; }
-
 i64 dot_fx(const std::array<i64, 3>& a, const std::array<i64, 3>& b, int F) {
     i128 s = 0;
     for (int i = 0; i < 3; ++i) s += i128(a[i]) * b[i];
     return i64(rshift_round(s, F));
 }
 
-// The surface normal at p (F bits, unit), turned to face the ray.
+}  // namespace
+
+int geo_sqrt_stages(int F) { return F + 8; }
+
 std::array<i64, 3> normal_fx(const CompiledScene& cs, int leaf, const std::array<i64, 3>& p,
                              const std::array<i64, 3>& d) {
     const int F = cs.fmt.frac, FC = cs.fmt.coef_frac;
@@ -45,7 +44,6 @@ std::array<i64, 3> normal_fx(const CompiledScene& cs, int leaf, const std::array
     return n;
 }
 
-// d - 2 (d.n) n, made unit.
 std::array<i64, 3> reflect_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, int F) {
     const i64 dn = dot_fx(d, n, F);
     std::array<i64, 3> r;
@@ -53,8 +51,6 @@ std::array<i64, 3> reflect_fx(const std::array<i64, 3>& d, const std::array<i64,
     return unit_fx(r, F, geo_sqrt_stages(F));
 }
 
-// Snell's law from medium ior1 into ior2 (kColorFrac bits); false on total
-// internal reflection.
 bool refract_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, i64 ior1, i64 ior2, int F,
                 std::array<i64, 3>& out) {
     const i64 one = i64(1) << F;
@@ -76,6 +72,75 @@ bool refract_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, i64 io
 
 i64 ior_of(const CompiledScene& cs, int material) {
     return material == 0 ? kColorOne : cs.materials[material].ior;
+}
+
+namespace {
+
+// Most crossings a shadow ray follows through transparent solids.
+constexpr int kMaxShadowCrossings = 16;
+
+// The light reaching point p from a light at p + lv, through transparent
+// solids (kColorFrac bits per channel): the shadow ray runs straight, and
+// every crossing into a material multiplies the light by that material's
+// filter x pigment colour; an opaque material (filter 0) stops it.
+std::array<i64, 3> shadow_fx(const CompiledScene& cs, const std::array<i64, 3>& p, const std::array<i64, 3>& lv,
+                             const std::vector<uint8_t>& near_flags, TiePolicy ties, const EffectSet& fx) {
+    const int F = cs.fmt.frac;
+    std::array<i64, 3> atten{kColorOne, kColorOne, kColorOne};
+    RayFx ray;
+    ray.o = p;
+    ray.d = unit_fx(lv, F, geo_sqrt_stages(F));
+    u128 len2 = 0;
+    for (int i = 0; i < 3; ++i) len2 += u128(i128(lv[i]) * lv[i]);
+    TraceOptions so;
+    so.t_limit_fx = i64(isqrt_fast(len2));   // distance to the light, F bits
+    so.lookahead = fx.refraction;
+    std::vector<uint8_t> flags = near_flags;
+    for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
+        const TraceResult<i64> tr = trace_secondary_fx(cs, ray, flags, ties, false, so);
+        if (!tr.hit) return atten;
+        const int m = tr.border.to;
+        if (m != 0) {
+            if (!is_transparent(cs, m)) return {0, 0, 0};
+            for (int c = 0; c < 3; ++c)
+                atten[c] = i64(rshift_round(
+                    i128(atten[c]) * i64(rshift_round(i128(cs.materials[m].filter) * cs.materials[m].rgb[c], CF)), CF));
+        }
+        // continue from the crossing, on its far side
+        std::array<i64, 3> q;
+        if (!hit_point_fx(cs.fmt, ray, tr.t, q)) return atten;
+        ray.o = q;
+        flags = tr.flags_after;
+        so.t_limit_fx -= tr.t;
+        if (so.t_limit_fx <= 0) return atten;
+    }
+    return {0, 0, 0};   // too many crossings: treated as blocked
+}
+
+std::array<double, 3> shadow_d(const CompiledScene& cs, const glm::dvec3& p, const glm::dvec3& lv,
+                               const std::vector<uint8_t>& near_flags, TiePolicy ties, const EffectSet& fx) {
+    std::array<double, 3> atten{1.0, 1.0, 1.0};
+    const glm::dvec3 dir = glm::normalize(lv);
+    RayD ray;
+    for (int i = 0; i < 3; ++i) ray.o[i] = p[i], ray.d[i] = dir[i];
+    TraceOptions so;
+    so.t_limit_d = glm::length(lv);
+    so.lookahead = fx.refraction;
+    std::vector<uint8_t> flags = near_flags;
+    for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
+        const TraceResult<double> tr = trace_secondary_d(cs, ray, flags, ties, false, so);
+        if (!tr.hit) return atten;
+        const int m = tr.border.to;
+        if (m != 0) {
+            if (!is_transparent(cs, m)) return {0, 0, 0};
+            for (int c = 0; c < 3; ++c) atten[c] *= cs.materials[m].pigment.filter * cs.materials[m].pigment.rgb[c];
+        }
+        for (int i = 0; i < 3; ++i) ray.o[i] += tr.t * ray.d[i];
+        flags = tr.flags_after;
+        so.t_limit_d -= tr.t;
+        if (so.t_limit_d <= 0.0) return atten;
+    }
+    return {0, 0, 0};
 }
 
 }  // namespace
@@ -127,30 +192,22 @@ std::array<i64, 3> trace_colour_fx(const CompiledScene& cs, const RayFx& ray, co
     const std::array<i64, 3> n = spawn ? normal_fx(cs, tr.leaf, p, ray.d) : std::array<i64, 3>{};
 
     // Shadows: a ray from the hit point towards each light, with the flags
-    // of the near side; any surface before the light blocks it (opaque
-    // shadows, docs/effects.md). A light behind the surface leaves it unlit.
-    uint32_t lit = ~0u;
+    // of the near side. A light behind the surface leaves it unlit.
+    LightScaleFx scale(cs.lights.size(), {kColorOne, kColorOne, kColorOne});
     if (fx.shadows) {
         for (size_t k = 0; k < cs.lights.size(); ++k) {
             std::array<i64, 3> lv;
             for (int i = 0; i < 3; ++i) lv[i] = cs.lights[k].pos_fx[i] - p[i];
             i128 nl = 0;
             for (int i = 0; i < 3; ++i) nl += i128(n[i]) * lv[i];
-            if (nl <= 0) {
-                lit &= ~(1u << k);
-                continue;
-            }
-            RayFx shadow;
-            shadow.o = p;
-            shadow.d = unit_fx(lv, F, geo_sqrt_stages(F));
-            u128 len2 = 0;
-            for (int i = 0; i < 3; ++i) len2 += u128(i128(lv[i]) * lv[i]);
-            TraceOptions so;
-            so.t_limit_fx = i64(isqrt_fast(len2));   // distance to the light, F bits
-            if (trace_secondary_fx(cs, shadow, tr.flags_before, ties, false, so).hit) lit &= ~(1u << k);
+            if (nl <= 0)
+                scale[k] = {0, 0, 0};
+            else
+                scale[k] = shadow_fx(cs, p, lv, tr.flags_before, ties, fx);
         }
     }
-    const std::array<i64, 3> local = shade_fx(cs, ray, tr, lit);
+    std::array<i64, 3> spec;
+    const std::array<i64, 3> local = shade_fx(cs, ray, tr, &scale, &spec);
     std::array<i64, 3> col = local;
     if (depth >= cs.max_trace_level) return col;
 
@@ -166,7 +223,7 @@ std::array<i64, 3> trace_colour_fx(const CompiledScene& cs, const RayFx& ray, co
         const std::array<i64, 3> tc = trace_colour_fx(cs, child, child_flags, depth + 1, ties, fx);
         for (int c = 0; c < 3; ++c) {
             const i64 filt = i64(rshift_round(i128(m.filter) * m.rgb[c], CF));
-            col[c] = i64(rshift_round(i128(kColorOne - m.filter) * local[c], CF)) +
+            col[c] = i64(rshift_round(i128(kColorOne - m.filter) * (local[c] - spec[c]), CF)) + spec[c] +
                      i64(rshift_round(i128(filt) * tc[c], CF));
         }
     }
@@ -204,21 +261,16 @@ std::array<double, 3> trace_colour_d(const CompiledScene& cs, const RayD& ray, c
         return r;
     };
 
-    uint32_t lit = ~0u;
+    LightScaleD scale(cs.lights.size(), {1.0, 1.0, 1.0});
     if (fx.shadows) {
         for (size_t k = 0; k < cs.lights.size(); ++k) {
             const glm::dvec3 lv = cs.lights[k].pos - p;
-            if (glm::dot(n, lv) <= 0.0) {
-                lit &= ~(1u << k);
-                continue;
-            }
-            TraceOptions so;
-            so.t_limit_d = glm::length(lv);
-            if (trace_secondary_d(cs, to_ray(p, glm::normalize(lv)), tr.flags_before, ties, false, so).hit)
-                lit &= ~(1u << k);
+            scale[k] = glm::dot(n, lv) <= 0.0 ? std::array<double, 3>{0, 0, 0}
+                                               : shadow_d(cs, p, lv, tr.flags_before, ties, fx);
         }
     }
-    const std::array<double, 3> local = shade_d(cs, ray, tr, lit);
+    std::array<double, 3> spec;
+    const std::array<double, 3> local = shade_d(cs, ray, tr, &scale, &spec);
     std::array<double, 3> col = local;
     if (depth >= cs.max_trace_level) return col;
     const glm::dvec3 refl = glm::normalize(d - 2.0 * glm::dot(d, n) * n);
@@ -237,7 +289,7 @@ std::array<double, 3> trace_colour_d(const CompiledScene& cs, const RayD& ray, c
         }
         const std::array<double, 3> tc = trace_colour_d(cs, to_ray(p, dir), child_flags, depth + 1, ties, fx);
         const double f = m.pigment.filter;
-        for (int c = 0; c < 3; ++c) col[c] = (1.0 - f) * local[c] + f * m.pigment.rgb[c] * tc[c];
+        for (int c = 0; c < 3; ++c) col[c] = (1.0 - f) * (local[c] - spec[c]) + spec[c] + f * m.pigment.rgb[c] * tc[c];
     }
     if (fx.reflection && m.finish.reflection > 0.0) {
         const std::array<double, 3> rc = trace_colour_d(cs, to_ray(p, refl), &tr.flags_before, depth + 1, ties, fx);

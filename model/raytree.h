@@ -23,6 +23,21 @@ EffectSet scene_effects(const CompiledScene& cs);
 // (phong included). Co-simulation renders the model with these.
 EffectSet rtl_effects(const CompiledScene& cs);
 
+// Geometry of secondary rays (F fraction bits, docs/effects.md):
+// square-root stages for unit vectors of geometry vectors with |v_i| < 128
+int geo_sqrt_stages(int F);
+// the unit surface normal of `leaf` at p, turned to face direction d
+std::array<i64, 3> normal_fx(const CompiledScene& cs, int leaf, const std::array<i64, 3>& p,
+                             const std::array<i64, 3>& d);
+// d - 2 (d.n) n, made unit
+std::array<i64, 3> reflect_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, int F);
+// Snell's law from index ior1 into ior2 (kColorFrac bits); false on total
+// internal reflection
+bool refract_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, i64 ior1, i64 ior2, int F,
+                std::array<i64, 3>& out);
+// the index of refraction of a material (air: 1)
+i64 ior_of(const CompiledScene& cs, int material);
+
 // Colour of a ray (linear, kColorFrac fraction bits, not yet saturated),
 // following shadows, reflection and refraction as `fx` allows.
 // `flags` is null for a primary ray.

@@ -103,7 +103,8 @@ i64 align(i64 v, int from, int to) {
     return from >= to ? i64(rshift_round(v, from - to)) : v << (to - from);
 }
 
-std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit, uint32_t lit) {
+std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit,
+                            const LightScaleFx* light_scale, std::array<i64, 3>* spec_out) {
     if (!hit.hit) return cs.background_fx;
     const int F = cs.fmt.frac;
     const int FC = cs.fmt.coef_frac;
@@ -148,8 +149,15 @@ std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const Tra
     std::array<i64, 3> refl;   // the reflected view direction R = d - 2 (d.n) n
     for (int i = 0; i < 3; ++i) refl[i] = ds[i] - i64(rshift_round(i128(2 * dn) * n[i], SF));
     for (size_t k = 0; k < cs.lights.size(); ++k) {
-        if (!((lit >> k) & 1)) continue;
-        const LightInfo& li = cs.lights[k];
+        LightInfo li = cs.lights[k];
+        if (light_scale) {
+            bool dark = true;
+            for (int c = 0; c < 3; ++c) {
+                li.color_fx[c] = i64(rshift_round(i128(li.color_fx[c]) * (*light_scale)[k][c], CF));
+                dark = dark && li.color_fx[c] == 0;
+            }
+            if (dark) continue;
+        }
         std::array<i64, 3> lv;
         for (int i = 0; i < 3; ++i) lv[i] = align(li.pos_fx[i], F, PF) - ps[i];
         const std::array<i64, 3> l = unit_fx(lv, SF, kShadeSqrtStages);
@@ -170,11 +178,12 @@ std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const Tra
         const i64 intensity = m.ambient + i64(rshift_round(i128(m.diffuse) * diffuse[c], CF));
         col[c] = i64(rshift_round(i128(m.rgb[c]) * intensity, CF)) + spec[c];
     }
+    if (spec_out) *spec_out = spec;
     return col;
 }
 
 std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const TraceResult<double>& hit,
-                              uint32_t lit) {
+                              const LightScaleD* light_scale, std::array<double, 3>* spec_out) {
     if (!hit.hit) return {cs.background.x, cs.background.y, cs.background.z};
     const QuadricD& q = cs.leaves[hit.leaf].quad;
     const int mat_index = hit.border.to != 0 ? hit.border.to : hit.border.from;
@@ -188,8 +197,11 @@ std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const Tr
     const glm::dvec3 refl = d - 2.0 * glm::dot(d, n) * n;
     glm::dvec3 diffuse(0.0), spec(0.0);
     for (size_t k = 0; k < cs.lights.size(); ++k) {
-        if (!((lit >> k) & 1)) continue;
-        const LightInfo& li = cs.lights[k];
+        LightInfo li = cs.lights[k];
+        if (light_scale) {
+            for (int c = 0; c < 3; ++c) li.color[c] *= (*light_scale)[k][c];
+            if (li.color == glm::dvec3(0.0)) continue;
+        }
         const glm::dvec3 l = glm::normalize(li.pos - p);
         const double ndl = glm::dot(n, l);
         if (ndl > 0.0) diffuse += li.color * ndl;
@@ -201,6 +213,7 @@ std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const Tr
     std::array<double, 3> col;
     for (int c = 0; c < 3; ++c)
         col[c] = m.pigment.rgb[c] * (m.finish.ambient + m.finish.diffuse * diffuse[c]) + spec[c];
+    if (spec_out) *spec_out = {spec[0], spec[1], spec[2]};
     return col;
 }
 

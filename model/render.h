@@ -77,12 +77,17 @@ i64 pow_fx(i64 x, int n, int F);
 uint8_t srgb_encode_fx(i64 linear);
 uint8_t srgb_encode_d(double linear);
 
-// Local shading of a hit: linear colour, kColorFrac fraction bits. Light k
-// contributes diffuse and phong only if bit k of `lit` is set (shadows).
+// Local shading of a hit: linear colour, kColorFrac fraction bits. With
+// `light_scale`, light k's colour is first multiplied by light_scale[k]
+// (kColorFrac bits per channel: what reaches the point through shadows).
+using LightScaleFx = std::vector<std::array<i64, 3>>;
+using LightScaleD = std::vector<std::array<double, 3>>;
+// `spec_out`, when given, receives the phong part of the result (a filter
+// does not dim highlights, as in POV-Ray).
 std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const TraceResult<i64>& hit,
-                            uint32_t lit = ~0u);
+                            const LightScaleFx* light_scale = nullptr, std::array<i64, 3>* spec_out = nullptr);
 std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const TraceResult<double>& hit,
-                              uint32_t lit = ~0u);
+                              const LightScaleD* light_scale = nullptr, std::array<double, 3>* spec_out = nullptr);
 
 // The whole frame.
 Frame render(const CompiledScene& cs, const RenderOptions& opt);
