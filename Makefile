@@ -48,6 +48,8 @@ help:
 	@echo "             ULX3S bitstream (yosys, nextpnr-ecp5, ecppack) to out/synth/; docs/fpga.md"
 	@echo "make lint    verilator --lint-only -Wall and yosys synthesis of every RTL module"
 	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
+	@echo "make stability    the paper's hard cases: random transforms x widths x ties x {exact, epsilon}"
+	@echo "make hard-cases   write docs/hard-cases.md (montages: exact | epsilon | POV-Ray)"
 
 deps:
 	@tools/deps.sh
@@ -149,6 +151,14 @@ lint: deps lint-rtl
 
 bench-model: model
 	@tools/bench_model.sh
+
+# the hard-case stability suite (model/stability.h) and its report
+.PHONY: stability hard-cases
+stability: model
+	@$(BUILD)/csgrt stability
+
+hard-cases: model
+	@tools/hard_cases.sh
 
 clean:
 	rm -rf $(BUILD) out

@@ -1,10 +1,13 @@
 // main.cpp — the csgrt command line: render a scene with the golden model,
 // compile it to the binary scene image the RTL loads, or describe it.
 #include "compile.h"
+#include "epsilon.h"
 #include "image.h"
 #include "parse.h"
+#include "raytree.h"
 #include "render.h"
 #include "scene_image.h"
+#include "stability.h"
 
 #include <chrono>
 #include <cstdio>
@@ -20,11 +23,14 @@ const char* kUsage =
     "  csgrt render SCENE.pov -o OUT.png [options]   render with the golden model\n"
     "  csgrt compile SCENE.pov -o OUT.bin [options]  write the binary scene image (and OUT.hex)\n"
     "  csgrt info SCENE.pov [options]                print the compiled scene\n"
+    "  csgrt stability [--quick] [--transforms N] [--case NAME] [--md FILE]\n"
+    "                                                the hard-case stability suite (model/stability.h)\n"
     "options:\n"
     "  --width W --height H       image size (default 320x240)\n"
     "  --bits B                   coordinate width, 12..32 (default 24)\n"
     "  --arith fixed|double       fixed-point model or double reference (default fixed)\n"
     "  --ties paper|regular       tie policy at equal t (default paper)\n"
+    "  --method exact|epsilon     exact CSG (default) or the conventional epsilon method (model/epsilon.h)\n"
     "  --threads N                worker threads (default: all cores)\n"
     "  --max-leaves N             hardware limit on leaves (compile: default 64, the RTL's)\n"
     "  --tree-height H            hardware classification-tree height (compile: default 8)\n"
@@ -35,6 +41,7 @@ struct Args {
     CompileOptions copt;
     RenderOptions ropt;
     bool quiet = false;
+    bool epsilon = false;
 };
 
 [[noreturn]] void usage_error(const std::string& msg) {
@@ -77,6 +84,11 @@ Args parse_args(int argc, char** argv) {
             if (v == "paper") a.ropt.ties = TiePolicy::Paper;
             else if (v == "regular") a.ropt.ties = TiePolicy::Regular;
             else usage_error("--ties expects paper or regular, got '" + v + "'");
+        } else if (s == "--method") {
+            const std::string v = value();
+            if (v == "exact") a.epsilon = false;
+            else if (v == "epsilon") a.epsilon = true;
+            else usage_error("--method expects exact or epsilon, got '" + v + "'");
         } else if (!s.empty() && s[0] == '-') usage_error("unknown option " + s);
         else if (a.scene.empty()) a.scene = s;
         else usage_error("unexpected argument " + s);
@@ -103,6 +115,7 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, stdout);
         return 0;
     }
+    if (argc >= 2 && !std::strcmp(argv[1], "stability")) return stability_main(argc - 1, argv + 1);
     Args a = parse_args(argc, argv);
     if (a.cmd == "compile") {
         // a scene image is for the RTL: check its limits and lay out its tree
@@ -114,6 +127,7 @@ int main(int argc, char** argv) {
         const CompiledScene cs = compile_scene(scene, a.copt);
         if (a.cmd == "info") {
             print_info(cs);
+            std::printf("effects: %s\n", scene_effects(cs).str().c_str());
             return 0;
         }
         if (a.out.empty()) usage_error(a.cmd + " needs -o OUT");
@@ -129,14 +143,15 @@ int main(int argc, char** argv) {
         if (a.cmd == "render") {
             RenderOptions ro = a.ropt;
             ro.progress = !a.quiet;
+            if (!a.quiet) std::fprintf(stderr, "csgrt: effects: %s\n", scene_effects(cs).str().c_str());
             const auto t0 = std::chrono::steady_clock::now();
-            const Frame f = render(cs, ro);
+            const Frame f = a.epsilon ? render_epsilon(cs, ro) : render(cs, ro);
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             write_image(a.out, f.width, f.height, f.rgb);
             if (!a.quiet)
                 std::fprintf(stderr, "csgrt: wrote %s (%dx%d, %s, %d bits, ties %s, %.3f s)\n", a.out.c_str(),
                              f.width, f.height, ro.arith == Arith::Fixed ? "fixed" : "double", cs.fmt.bits,
-                             ro.ties == TiePolicy::Paper ? "paper" : "regular", secs);
+                             a.epsilon ? "epsilon" : ro.ties == TiePolicy::Paper ? "paper" : "regular", secs);
             return 0;
         }
         usage_error("unknown command '" + a.cmd + "'");

@@ -1,0 +1,20 @@
+// Fig. 7: A - B sharing faces. A slot is cut through the top of a box by a
+// cutter whose top, front and back faces lie exactly on the box's faces.
+// The shared face must be found exactly once: under ties "regular" the slot
+// is open (as if the cutter were infinitesimally larger), under "paper" a
+// zero-thickness film covers it, seen from outside. Never a hole into the
+// slot's walls in one pixel and a film in the next.
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+
+camera { location <0, 3.0, -4.8> look_at <0, 0.4, 0> angle 44 right x*4/3 up y }
+light_source { <-5, 9, -6> color rgb <1, 1, 1> }
+light_source { <6, 4, -5> color rgb <0.3, 0.3, 0.3> }
+background { color rgb <0.08, 0.12, 0.45> }
+difference {
+  box { <-1, 0, -0.8>, <1, 1, 0.8> }
+  box { <-0.35, 0.45, -0.8>, <0.35, 1, 0.8> }
+  pigment { color rgb <0.85, 0.65, 0.3> }
+  finish { ambient 0.15 diffuse 0.75 }
+  rotate <11, 27, -7>
+}
