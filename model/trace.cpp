@@ -225,6 +225,8 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
         tree = cs.class_tree;   // copy-assignment reuses this thread's buffers
         tree.reset(flags.data(), cs.leaf_material.data());
     }
+    thread_local std::vector<size_t> crossed;   // the valid events so far, in order
+    crossed.clear();
     for (size_t i = 0; i < ahead.size(); ++i) {
         const Event<T>& e = ahead[i];
         // Validity check: entering while IN or leaving while OUT is impossible.
@@ -233,6 +235,7 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
         const Class cl = tree.classify(e.leaf, e.entering);
         flags[e.leaf] = e.entering;
         tree.set_flag(e.leaf, e.entering);
+        crossed.push_back(i);
         if (cl.kind == Class::BORDER && cl.from != cl.to) {
             res.hit = true;
             res.t = e.t;
@@ -241,6 +244,16 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             res.border = cl;
             res.flags_before = flags;
             res.flags_before[e.leaf] = !e.entering;
+            // Look-behind, the near side's mirror of the look-ahead below:
+            // crossings just before the hit that lie at the same t, or whose
+            // surface the hit point does not lie beyond, have not happened
+            // at the hit point; the near side (shadow and reflected rays)
+            // is before them too (docs/effects.md).
+            for (size_t k = crossed.size() - 1; k-- > 0;) {
+                const Event<T>& b = ahead[crossed[k]];
+                if (!(b.t == e.t || !beyond(b, e.t))) break;
+                res.flags_before[b.leaf] = !b.entering;
+            }
             // Look-ahead through coincident surfaces behind a transparent
             // crossing (algorithm.md section 6).
             for (size_t j = i + 1; lookahead && is_transparent(cs, res.border.to) && j < ahead.size(); ++j) {
