@@ -59,14 +59,23 @@ plus the minority of a face that mixes both.
 
 Known issues of the exact model that the counts show (reported, not hidden):
 
-- **12 bits**: \`c = Q(o)\` is rounded to F = 9 fraction bits (numerics.md 3.1),
-  coarser than r^2 for a quadric whose radius is under about 22 ulps, so the
-  discriminant is mostly rounding noise: small spheres, cylinders and cones
-  render fuzzy (background inside their silhouette) in both methods.
 - **Fig. 9 up to 24 bits**: where the shell is thinner than the rounding error
-  of the two spheres' t, the inner sphere's entry sorts first and the walk
-  (correctly, for the rounded order) sees the cavity: a hole at the thin point
-  that grows as the width shrinks.
+  of the two spheres' t (about 10 ulp each, numerics.md 3.5), the inner
+  sphere's entry can sort first and the walk (correctly, for the rounded
+  order) sees into the cavity: a "hole" at the thin point that shrinks as
+  the width grows and is gone at 32 bits. It is not background showing
+  through (the cavity is closed); more guard bits in a, b, c would shrink it.
+- **Fig. 4 under regular ties**: where the two cylinders overlap, their tops
+  are cut by coincident planes of two different cutters. The regular key
+  leaves the lower-numbered cutter first, which makes the later cutter
+  (cylinder B's) the infinitesimally larger one, so A's top shows over the
+  overlap that B owns; the regular reference expects B. (Under paper ties A
+  shows there too, by that policy's own rule, lower leaf first, and its
+  reference expects A.) A key that knows a leaf's polarity (cutter or
+  solid) would settle it.
+- At 12 bits every width-dependent effect is shared by the test scene and
+  its reference (both are traced at the same width), so the counts isolate
+  what coincident surfaces do.
 
 EOT
 captions | while IFS='|' read -r name sentence; do
