@@ -123,7 +123,7 @@ sim: model $(SIM_BIN)
 FREQ ?= 100
 BAUD ?= 3000000
 synth: deps
-	@tools/synth.sh --bits $(BITS) --freq $(FREQ) --baud $(BAUD)
+	@tools/synth.sh --bits $(BITS) --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
 
 # the board top in Verilator with a UART model (tb/board/): the PLL replaced
 # by tb/board/EHXPLLL.v, BOARD_UART_DIV clocks per UART bit

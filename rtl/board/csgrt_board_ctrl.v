@@ -1,0 +1,173 @@
+`default_nettype none
+// csgrt_board_ctrl — csgrt_top behind a serial line: the host's protocol
+// (docs/fpga.md) on byte streams from/to a UART.
+//
+// Host -> board: a command byte, then (for P and R) the scene image exactly
+// as `csgrt compile` writes it (32-bit words, little-endian bytes).
+//   'P' (0x50)  load the image and render it, tie policy paper
+//   'R' (0x52)  load the image and render it, tie policy regular
+//   'I' (0x49)  identify: no image follows
+//   anything else in idle is ignored.
+// Board -> host:
+//   'I':      A5 49 BITS MAX_LEAVES TREE_HEIGHT 00
+//   P / R:    A5 code; code 0: the image loaded, then W*H pixels as r, g, b
+//             bytes in raster order, then the frame's cycle count (start to
+//             last pixel, 8 bytes little-endian). code 1..5: the loader
+//             refused the image (csgrt_scene_loader's codes), the rest of the
+//             image is discarded until the line is idle for IDLE_CLOCKS;
+//             code 15: the image stopped arriving (idle for IDLE_CLOCKS
+//             before its last word).
+// Each P / R command resets the core first, so every frame starts clean.
+module csgrt_board_ctrl #(
+    parameter BITS         = 24,
+    parameter MAX_LEAVES   = 64,
+    parameter TREE_HEIGHT  = 8,
+    parameter IDLE_CLOCKS  = 10000000,   // line idle time that ends a discard / aborts a load
+    parameter LUT_FILE     = "rtl/srgb_lut.hex"
+) (
+    input  wire       clk_i,
+    input  wire       rst_ni,            // synchronous, active low
+    // received bytes
+    input  wire       rx_valid_i,
+    input  wire [7:0] rx_data_i,
+    // bytes to send
+    output wire       tx_valid_o,
+    input  wire       tx_ready_i,
+    output wire [7:0] tx_data_o,
+    // status for LEDs
+    output wire [3:0] state_o,
+    output reg  [3:0] last_code_o
+);
+    localparam S_IDLE = 4'd0, S_RESET = 4'd1, S_LOAD = 4'd2, S_STATUS = 4'd3, S_RENDER = 4'd4,
+               S_TRAILER = 4'd5, S_DRAIN = 4'd6, S_WAIT = 4'd7;
+    localparam IW = $clog2(IDLE_CLOCKS + 1);
+    /* verilator lint_off WIDTH */
+    localparam [IW-1:0] IDLE_MAX = IDLE_CLOCKS;
+    localparam [7:0] ID_BITS = BITS, ID_LEAVES = MAX_LEAVES, ID_HEIGHT = TREE_HEIGHT;
+    /* verilator lint_on WIDTH */
+
+    reg [3:0]  state_q;
+    reg        core_rst_nq;
+    reg [2:0]  rst_cnt_q;
+    reg        ties_q;
+    reg [1:0]  byte_idx_q;
+    reg [31:0] word_q;
+    reg        word_valid_q;
+    reg [IW-1:0] idle_q;
+    reg [3:0]  code_q;
+    reg [63:0] ob_q;                     // bytes to send, the next in ob_q[7:0]
+    reg [3:0]  on_q;                     // how many
+    reg        start_q;
+    assign state_o = state_q;
+
+    // ------------------------------------------------------------- the core
+    wire        load_ready, loaded, busy, done, pix_valid;
+    wire [3:0]  load_error;
+    wire [11:0] pix_x, pix_y;
+    wire [23:0] pix_rgb;
+    wire [63:0] stat_cycles, stat_pairs;
+    wire        pix_ready = (state_q == S_RENDER) && (on_q == 4'd0);
+
+    csgrt_top #(.BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .TREE_HEIGHT(TREE_HEIGHT), .LUT_FILE(LUT_FILE)) u_core (
+        .clk_i, .rst_ni (core_rst_nq),
+        .load_valid_i (word_valid_q), .load_ready_o (load_ready), .load_word_i (word_q),
+        .loaded_o (loaded), .load_error_o (load_error),
+        .start_i (start_q), .ties_regular_i (ties_q), .busy_o (busy), .done_o (done),
+        .pix_valid_o (pix_valid), .pix_ready_i (pix_ready),
+        .pix_x_o (pix_x), .pix_y_o (pix_y), .pix_rgb_o (pix_rgb),
+        .stat_cycles_o (stat_cycles), .stat_pairs_o (stat_pairs)
+    );
+
+    // --------------------------------------------------------- byte output
+    assign tx_valid_o = (on_q != 4'd0);
+    assign tx_data_o  = ob_q[7:0];
+
+    always @(posedge clk_i) begin
+        start_q <= 1'b0;
+        if (!rst_ni) begin
+            state_q      <= S_IDLE;
+            core_rst_nq  <= 1'b0;
+            word_valid_q <= 1'b0;
+            on_q         <= 4'd0;
+            last_code_o  <= 4'd0;
+            idle_q       <= {IW{1'b0}};
+        end else begin
+            if (tx_valid_o && tx_ready_i) begin
+                ob_q <= {8'd0, ob_q[63:8]};
+                on_q <= on_q - 4'd1;
+            end
+            if (word_valid_q && load_ready) word_valid_q <= 1'b0;
+            idle_q <= rx_valid_i ? {IW{1'b0}} : (idle_q == IDLE_MAX ? idle_q : idle_q + 1'b1);
+
+            case (state_q)
+            S_IDLE:
+                if (rx_valid_i) begin
+                    if (rx_data_i == 8'h50 || rx_data_i == 8'h52) begin
+                        ties_q      <= rx_data_i[1];
+                        core_rst_nq <= 1'b0;
+                        rst_cnt_q   <= 3'd0;
+                        byte_idx_q  <= 2'd0;
+                        state_q     <= S_RESET;
+                    end else if (rx_data_i == 8'h49) begin
+                        ob_q <= {24'd0, ID_HEIGHT, ID_LEAVES, ID_BITS, 8'h49, 8'hA5};
+                        on_q <= 4'd6;
+                    end
+                end
+            S_RESET: begin                       // a few clocks of core reset
+                rst_cnt_q <= rst_cnt_q + 3'd1;
+                if (rst_cnt_q == 3'd7) begin
+                    core_rst_nq <= 1'b1;
+                    state_q     <= S_LOAD;
+                end
+            end
+            S_LOAD: begin
+                if (rx_valid_i) begin            // assemble little-endian words
+                    word_q     <= {rx_data_i, word_q[31:8]};
+                    byte_idx_q <= byte_idx_q + 2'd1;
+                    if (byte_idx_q == 2'd3) word_valid_q <= 1'b1;
+                end
+                if (load_error != 4'd0 || loaded) begin
+                    code_q  <= load_error;
+                    state_q <= S_STATUS;
+                end else if (idle_q == IDLE_MAX) begin
+                    code_q  <= 4'd15;
+                    state_q <= S_STATUS;
+                end
+            end
+            S_STATUS:
+                if (on_q == 4'd0) begin
+                    ob_q        <= {48'd0, 4'd0, code_q, 8'hA5};
+                    on_q        <= 4'd2;
+                    last_code_o <= code_q;
+                    if (code_q == 4'd0) begin
+                        start_q <= 1'b1;
+                        state_q <= S_RENDER;
+                    end else begin
+                        state_q <= (code_q == 4'd15) ? S_IDLE : S_DRAIN;
+                    end
+                end
+            S_RENDER:
+                if (pix_valid && pix_ready) begin
+                    ob_q <= {40'd0, pix_rgb[7:0], pix_rgb[15:8], pix_rgb[23:16]};
+                    on_q <= 4'd3;
+                end else if (done) begin
+                    state_q <= S_TRAILER;
+                end
+            S_TRAILER:                           // done_o was the clock before: statistics final
+                if (on_q == 4'd0) begin
+                    ob_q    <= stat_cycles;
+                    on_q    <= 4'd8;
+                    state_q <= S_WAIT;
+                end
+            S_WAIT:
+                if (on_q == 4'd0) state_q <= S_IDLE;
+            S_DRAIN:                             // discard the rest of a refused image
+                if (idle_q == IDLE_MAX) state_q <= S_IDLE;
+            default: state_q <= S_IDLE;
+            endcase
+        end
+    end
+
+    wire unused_ok = &{1'b0, busy, stat_pairs, pix_x, pix_y};
+endmodule
+`default_nettype wire
