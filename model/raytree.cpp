@@ -13,39 +13,21 @@ namespace {
 constexpr int CF = kColorFrac;
 constexpr i64 kColorOne = i64(1) << kColorFrac;
 
-i64 dot_fx(const std::array<i64, 3>& a, const std::array<i64, 3>& b, int F) {
-    i128 s = 0;
-    for (int i = 0; i < 3; ++i) s += i128(a[i]) * b[i];
-    return i64(rshift_round(s, F));
-}
-
 }  // namespace
 
 int geo_sqrt_stages(int F) { return F + 8; }
 
 std::array<i64, 3> normal_fx(const CompiledScene& cs, int leaf, const std::array<i64, 3>& p,
                              const std::array<i64, 3>& d) {
-    const int F = cs.fmt.frac, FC = cs.fmt.coef_frac;
-    const auto& k = cs.leaves[leaf].coef;
-    const i64 A[3][3] = {{k[C_A00], k[C_A01], k[C_A02]},
-                         {k[C_A01], k[C_A11], k[C_A12]},
-                         {k[C_A02], k[C_A12], k[C_A22]}};
-    std::array<i64, 3> g;
-    for (int i = 0; i < 3; ++i) {
-        i128 s = i128(k[C_P0 + i]) << F;
-        for (int j = 0; j < 3; ++j) s += i128(A[i][j]) * p[j];
-        g[i] = i64(rshift_round(s, FC));   // |g_i| < 16
-    }
+    const int F = cs.fmt.frac;
+    const std::array<i64, 3> g = half_gradient_fx(cs.leaves[leaf].coef.data(), p, F, cs.fmt.coef_frac);   // |g_i| < 16
     std::array<i64, 3> n = unit_fx(g, F, geo_sqrt_stages(F));
-    i128 nd = 0;
-    for (int i = 0; i < 3; ++i) nd += i128(n[i]) * d[i];
-    if (nd > 0)
-        for (i64& v : n) v = -v;
+    face_against(n, d);
     return n;
 }
 
 std::array<i64, 3> reflect_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, int F) {
-    const i64 dn = dot_fx(d, n, F);
+    const i64 dn = dot_round(d, n, F);
     std::array<i64, 3> r;
     for (int i = 0; i < 3; ++i) r[i] = d[i] - i64(rshift_round(i128(2 * dn) * n[i], F));
     return unit_fx(r, F, geo_sqrt_stages(F));
@@ -57,7 +39,7 @@ bool refract_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, i64 io
     i128 eta128 = 0;
     sdiv_trunc(i128(ior1) << F, ior2, F + 7, eta128);   // iors in [1/4, 16): eta < 64
     const i64 eta = i64(eta128);
-    const i64 cos_i = -dot_fx(d, n, F);                 // n faces the ray: cos_i >= 0
+    const i64 cos_i = -dot_round(d, n, F);                 // n faces the ray: cos_i >= 0
     const i64 sin2 = one - i64(rshift_round(i128(cos_i) * cos_i, F));
     const i64 k = one - i64(rshift_round(i128(rshift_round(i128(eta) * eta, F)) * sin2, F));
     if (k < 0) return false;

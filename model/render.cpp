@@ -24,13 +24,14 @@ const uint8_t kSrgbLut[4096] = {
 
 constexpr int kColorOne = 1 << kColorFrac;
 
+
+}  // namespace
+
 i64 dot_round(const std::array<i64, 3>& x, const std::array<i64, 3>& y, int shift) {
     i128 s = 0;
     for (int i = 0; i < 3; ++i) s += i128(x[i]) * y[i];
     return i64(rshift_round(s, shift));
 }
-
-}  // namespace
 
 std::array<i64, 3> unit_fx(const std::array<i64, 3>& v, int F, int sqrt_bits) {
     u128 len2 = 0;
@@ -117,10 +118,10 @@ std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const Tra
 
     // Hit point p = o + t d (geometry: F fraction bits), then the shading
     // copies of point, coefficients and direction (fixed widths, any B).
-    std::array<i64, 3> ps, ds;
+    std::array<i64, 3> p, ps, ds;
+    hit_point_fx(cs.fmt, ray, hit.t, p);
     for (int i = 0; i < 3; ++i) {
-        const i64 p = ray.o[i] + i64(rshift_round(i128(hit.t) * ray.d[i], F));
-        ps[i] = align(p, F, PF);
+        ps[i] = align(p[i], F, PF);
         ds[i] = align(ray.d[i], F, SF);
     }
     i64 ks[kNumCoefs];
@@ -128,20 +129,8 @@ std::array<i64, 3> shade_fx(const CompiledScene& cs, const RayFx& ray, const Tra
 
     // Normal: the gradient half A p + p_coef (PF bits), made unit (SF bits)
     // and turned to face the incoming ray.
-    const i64 A[3][3] = {{ks[C_A00], ks[C_A01], ks[C_A02]},
-                         {ks[C_A01], ks[C_A11], ks[C_A12]},
-                         {ks[C_A02], ks[C_A12], ks[C_A22]}};
-    std::array<i64, 3> g;
-    for (int i = 0; i < 3; ++i) {
-        i128 s = i128(ks[C_P0 + i]) << PF;
-        for (int j = 0; j < 3; ++j) s += i128(A[i][j]) * ps[j];
-        g[i] = i64(rshift_round(s, SF));
-    }
-    std::array<i64, 3> n = unit_fx(g, SF, kShadeSqrtStages);
-    i128 nd = 0;
-    for (int i = 0; i < 3; ++i) nd += i128(n[i]) * ds[i];
-    if (nd > 0)
-        for (i64& v : n) v = -v;
+    std::array<i64, 3> n = unit_fx(half_gradient_fx(ks, ps, PF, SF), SF, kShadeSqrtStages);
+    face_against(n, ds);
 
     // Diffuse and phong from every light that reaches the point.
     std::array<i64, 3> diffuse{0, 0, 0}, spec{0, 0, 0};

@@ -69,6 +69,9 @@ RayD camera_ray_d(const CompiledScene& cs, int x, int y);
 // number of square-root stages: sum v^2 must be below 4^sqrt_bits.
 std::array<i64, 3> unit_fx(const std::array<i64, 3>& v, int F, int sqrt_bits);
 
+// rnd(x . y, shift): a dot product rounded once.
+i64 dot_round(const std::array<i64, 3>& x, const std::array<i64, 3>& y, int shift);
+
 // x^n with F fraction bits, binary exponentiation from the exponent's least
 // significant bit, rounding each product (numerics.md section 6).
 i64 pow_fx(i64 x, int n, int F);

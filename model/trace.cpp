@@ -303,18 +303,31 @@ TraceResult<T> trace_generic(const CompiledScene& cs, Intersect isect, const std
 
 }  // namespace
 
-i64 quadric_at_fx(const Formats& fmt, const std::array<i64, kNumCoefs>& k, const std::array<i64, 3>& o) {
-    const int F = fmt.frac, FC = fmt.coef_frac;
+std::array<i64, 3> half_gradient_fx(const i64* k, const std::array<i64, 3>& p, int p_shift, int round) {
     const i64 A[3][3] = {{k[C_A00], k[C_A01], k[C_A02]},
                          {k[C_A01], k[C_A11], k[C_A12]},
                          {k[C_A02], k[C_A12], k[C_A22]}};
-    i128 sc = 0;
+    std::array<i64, 3> g;
     for (int i = 0; i < 3; ++i) {
-        i128 sw = i128(k[C_P0 + i]) << F;
-        for (int j = 0; j < 3; ++j) sw += i128(A[i][j]) * o[j];
-        const i64 w = i64(rshift_round(sw, FC));
-        sc += i128(o[i]) * (w + i64(rshift_round(k[C_P0 + i], FC - F)));
+        i128 s = i128(k[C_P0 + i]) << p_shift;
+        for (int j = 0; j < 3; ++j) s += i128(A[i][j]) * p[j];
+        g[i] = i64(rshift_round(s, round));
     }
+    return g;
+}
+
+void face_against(std::array<i64, 3>& n, const std::array<i64, 3>& d) {
+    i128 nd = 0;
+    for (int i = 0; i < 3; ++i) nd += i128(n[i]) * d[i];
+    if (nd > 0)
+        for (i64& v : n) v = -v;
+}
+
+i64 quadric_at_fx(const Formats& fmt, const std::array<i64, kNumCoefs>& k, const std::array<i64, 3>& o) {
+    const int F = fmt.frac, FC = fmt.coef_frac;
+    const std::array<i64, 3> w = half_gradient_fx(k.data(), o, F, FC);
+    i128 sc = 0;
+    for (int i = 0; i < 3; ++i) sc += i128(o[i]) * (w[i] + i64(rshift_round(k[C_P0 + i], FC - F)));
     return i64(rshift_round(sc, F)) + i64(rshift_round(k[C_Q], FC - F));
 }
 

@@ -106,6 +106,14 @@ TraceResult<i64> trace_secondary_fx(const CompiledScene& cs, const RayFx& ray, c
 TraceResult<double> trace_secondary_d(const CompiledScene& cs, const RayD& ray, const std::vector<uint8_t>& flags,
                                       TiePolicy ties, bool keep_diagnostics = false, const TraceOptions& opt = {});
 
+// Half the gradient of a quadric at p, per axis rnd(A p + (p_coef << p_shift),
+// round), coefficients in CoefIndex order: the w of intersect_fx (p_shift F,
+// round FC), the normal of secondary rays, and the shading normal.
+std::array<i64, 3> half_gradient_fx(const i64* coef, const std::array<i64, 3>& p, int p_shift, int round);
+
+// Turns a normal to face a direction: negated when n.d > 0 (exact sign).
+void face_against(std::array<i64, 3>& n, const std::array<i64, 3>& d);
+
 // Q(p) of one leaf at a point (F fraction bits), computed as c is in
 // intersect_fx with the origin at p: its sign is exact for the rounded
 // coefficients along any ray from p.
