@@ -58,13 +58,8 @@ TEST(Effects, Fig8NoSelfShadowingNoSelfReflection) {
                     for (int i = 0; i < 3; ++i) lv[i] = cs.lights[0].pos_fx[i] - p[i], nl += i128(n[i]) * lv[i];
                     if (nl > 0) {
                         ++lit_points;
-                        RayFx sh;
-                        sh.o = p;
-                        sh.d = unit_fx(lv, F, geo_sqrt_stages(F));
-                        u128 len2 = 0;
-                        for (int i = 0; i < 3; ++i) len2 += u128(i128(lv[i]) * lv[i]);
                         TraceOptions so;
-                        so.t_limit_fx = i64(isqrt_fast(len2));
+                        const RayFx sh = shadow_ray_fx(F, p, lv, so.t_limit_fx);
                         const TraceResult<i64> st = trace_secondary_fx(cs, sh, tr.flags_before, ties, false, so);
                         shadowed += st.hit;   // ground truth: nothing can occlude the lit side
                         self_shadow += st.hit && st.leaf == sphere;
@@ -201,13 +196,8 @@ std::pair<int, int> lit_points_shadowed(const CompiledScene& cs, TiePolicy ties)
                 for (int i = 0; i < 3; ++i) lv[i] = light.pos_fx[i] - p[i], nl += i128(n[i]) * lv[i];
                 if (nl <= 0) continue;
                 ++lit;
-                RayFx sh;
-                sh.o = p;
-                sh.d = unit_fx(lv, F, geo_sqrt_stages(F));
-                u128 len2 = 0;
-                for (int i = 0; i < 3; ++i) len2 += u128(i128(lv[i]) * lv[i]);
                 TraceOptions so;
-                so.t_limit_fx = i64(isqrt_fast(len2));
+                const RayFx sh = shadow_ray_fx(F, p, lv, so.t_limit_fx);
                 shadowed += trace_secondary_fx(cs, sh, tr.flags_before, ties, false, so).hit;
             }
         }

@@ -52,6 +52,16 @@ bool refract_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, i64 io
     return true;
 }
 
+RayFx shadow_ray_fx(int F, const std::array<i64, 3>& p, const std::array<i64, 3>& lv, i64& distance) {
+    RayFx ray;
+    ray.o = p;
+    ray.d = unit_fx(lv, F, geo_sqrt_stages(F));
+    u128 len2 = 0;
+    for (int i = 0; i < 3; ++i) len2 += u128(i128(lv[i]) * lv[i]);
+    distance = i64(isqrt_fast(len2));
+    return ray;
+}
+
 i64 ior_of(const CompiledScene& cs, int material) {
     return material == 0 ? kColorOne : cs.materials[material].ior;
 }
@@ -69,13 +79,8 @@ std::array<i64, 3> shadow_fx(const CompiledScene& cs, const std::array<i64, 3>& 
                              const std::vector<uint8_t>& near_flags, TiePolicy ties, const EffectSet& fx) {
     const int F = cs.fmt.frac;
     std::array<i64, 3> atten{kColorOne, kColorOne, kColorOne};
-    RayFx ray;
-    ray.o = p;
-    ray.d = unit_fx(lv, F, geo_sqrt_stages(F));
-    u128 len2 = 0;
-    for (int i = 0; i < 3; ++i) len2 += u128(i128(lv[i]) * lv[i]);
     TraceOptions so;
-    so.t_limit_fx = i64(isqrt_fast(len2));   // distance to the light, F bits
+    RayFx ray = shadow_ray_fx(F, p, lv, so.t_limit_fx);
     so.lookahead = fx.refraction;
     std::vector<uint8_t> flags = near_flags;
     for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {

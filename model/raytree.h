@@ -35,6 +35,9 @@ std::array<i64, 3> reflect_fx(const std::array<i64, 3>& d, const std::array<i64,
 // internal reflection
 bool refract_fx(const std::array<i64, 3>& d, const std::array<i64, 3>& n, i64 ior1, i64 ior2, int F,
                 std::array<i64, 3>& out);
+// the ray from p towards a light at p + lv, and the distance to the light
+// (F bits): events at t >= that distance are not reached
+RayFx shadow_ray_fx(int F, const std::array<i64, 3>& p, const std::array<i64, 3>& lv, i64& distance);
 // the index of refraction of a material (air: 1)
 i64 ior_of(const CompiledScene& cs, int material);
 
