@@ -249,8 +249,12 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             // surface the hit point does not lie beyond, have not happened
             // at the hit point; the near side (shadow and reflected rays)
             // is before them too (docs/effects.md).
-            for (size_t k = crossed.size() - 1; k-- > 0;) {
-                const Event<T>& b = ahead[crossed[k]];
+            // At most kLookBehind crossings are undone (the RTL carries
+            // that many beside the hit).
+            const size_t oldest = crossed.size() - 1 > size_t(kLookBehind) ? crossed.size() - 1 - kLookBehind : 0;
+            res.flags_hit_near = res.flags_before;
+            for (size_t k = crossed.size() - 1; k-- > oldest;) res.near_run.push_back(ahead[crossed[k]]);
+            for (const Event<T>& b : res.near_run) {
                 if (!(b.t == e.t || !beyond(b, e.t))) break;
                 res.flags_before[b.leaf] = !b.entering;
             }
@@ -268,6 +272,7 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             if (res.border.from == res.border.to) {
                 // the run came back to where it started: nothing is crossed
                 res.hit = false;
+                res.near_run.clear();
                 continue;
             }
             res.flags_after = flags;

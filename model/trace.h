@@ -70,6 +70,14 @@ struct TraceResult {
     Class border;                      // BORDER from,to of the hit
     std::vector<uint8_t> flags_before; // leaf flags just before the hit (near side)
     std::vector<uint8_t> flags_after;  // leaf flags just after it (far side)
+    // The look-behind's inputs, as the RTL hands them to child rays:
+    // flags_hit_near are the flags just before the hit crossing (no
+    // look-behind), near_run the up to kLookBehind valid crossings before
+    // the hit, most recent first; flags_before = flags_hit_near with the
+    // longest prefix of near_run undone whose events lie at the hit's t or
+    // whose surface the hit point does not lie beyond.
+    std::vector<uint8_t> flags_hit_near;
+    std::vector<Event<T>> near_run;
     // diagnostics: the sorted events ahead, and the origin flags
     std::vector<Event<T>> events;
     std::vector<uint8_t> origin_flags;
@@ -85,6 +93,10 @@ struct TraceResult {
 //    quadric at the hit point), apply the validity check, classify, toggle;
 //    stop at an opaque material. The hit then reads BORDER a1, an and
 //    flags_after are the flags beyond the whole run.
+// The look-behind (docs/effects.md) undoes at most this many crossings
+// just before a hit; the RTL hands them to the child rays beside the hit.
+constexpr int kLookBehind = 4;
+
 struct TraceOptions {
     i64 t_limit_fx = 0;
     double t_limit_d = 0.0;
