@@ -163,16 +163,28 @@ EffectSet rtl_effects(const CompiledScene& cs) {
     return e;
 }
 
-std::array<i64, 3> trace_colour_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>* flags,
-                                   int depth, TiePolicy ties, const EffectSet& fx, TraceResult<i64>* first) {
+namespace {
+
+// One ray of a pixel's ray tree with weight w (kColorFrac bits per channel):
+// adds the ray's own contribution rnd(w L) to acc and traces its children
+// with their weights (docs/effects.md, "Colour"). The sum over the tree does
+// not depend on the order the rays are traced in, which lets the RTL trace
+// them as they come.
+void accumulate_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>* flags, int depth,
+                   const std::array<i64, 3>& w, TiePolicy ties, const EffectSet& fx, std::array<i64, 3>& acc,
+                   TraceResult<i64>* first) {
     const int F = cs.fmt.frac;
+    auto weigh = [](i64 a, i64 b) { return i64(rshift_round(i128(a) * b, CF)); };
     TraceOptions topt;
     topt.lookahead = fx.refraction;
     const TraceResult<i64> tr =
         flags ? trace_secondary_fx(cs, ray, *flags, ties, false, topt) : trace_primary_fx(cs, ray, ties, false, topt);
     if (first) *first = tr;
     std::array<i64, 3> p;
-    if (!tr.hit || !hit_point_fx(cs.fmt, ray, tr.t, p)) return cs.background_fx;
+    if (!tr.hit || !hit_point_fx(cs.fmt, ray, tr.t, p)) {
+        for (int c = 0; c < 3; ++c) acc[c] += weigh(w[c], cs.background_fx[c]);
+        return;
+    }
     const int mat = tr.border.to ? tr.border.to : tr.border.from;
     const MaterialInfo& m = cs.materials[mat];
     const bool spawn = fx.reflection || fx.refraction || fx.shadows;
@@ -194,12 +206,16 @@ std::array<i64, 3> trace_colour_fx(const CompiledScene& cs, const RayFx& ray, co
         }
     }
     std::array<i64, 3> spec;
-    const std::array<i64, 3> local = shade_fx(cs, ray, tr, &scale, &spec);
-    std::array<i64, 3> col = local;
-    if (depth >= cs.max_trace_level) return col;
+    std::array<i64, 3> local = shade_fx(cs, ray, tr, &scale, &spec);
+    const bool leaf_of_tree = depth >= cs.max_trace_level;
+    const bool transmits = !leaf_of_tree && fx.refraction && m.filter > 0;
+    if (transmits)   // what the surface shows itself; the rest comes through it
+        for (int c = 0; c < 3; ++c) local[c] = weigh(kColorOne - m.filter, local[c] - spec[c]) + spec[c];
+    for (int c = 0; c < 3; ++c) acc[c] += weigh(w[c], local[c]);
+    if (leaf_of_tree) return;
 
     // Refraction: the transmitted ray takes the far side's flags.
-    if (fx.refraction && m.filter > 0) {
+    if (transmits) {
         RayFx child;
         child.o = p;
         const std::vector<uint8_t>* child_flags = &tr.flags_after;
@@ -207,22 +223,28 @@ std::array<i64, 3> trace_colour_fx(const CompiledScene& cs, const RayFx& ray, co
             child.d = reflect_fx(ray.d, n, F);   // total internal reflection
             child_flags = &tr.flags_before;
         }
-        const std::array<i64, 3> tc = trace_colour_fx(cs, child, child_flags, depth + 1, ties, fx);
-        for (int c = 0; c < 3; ++c) {
-            const i64 filt = i64(rshift_round(i128(m.filter) * m.rgb[c], CF));
-            col[c] = i64(rshift_round(i128(kColorOne - m.filter) * (local[c] - spec[c]), CF)) + spec[c] +
-                     i64(rshift_round(i128(filt) * tc[c], CF));
-        }
+        std::array<i64, 3> wt;
+        for (int c = 0; c < 3; ++c) wt[c] = weigh(w[c], weigh(m.filter, m.rgb[c]));
+        accumulate_fx(cs, child, child_flags, depth + 1, wt, ties, fx, acc, nullptr);
     }
     // Mirror reflection: the reflected ray takes the near side's flags.
     if (fx.reflection && m.reflection > 0) {
         RayFx child;
         child.o = p;
         child.d = reflect_fx(ray.d, n, F);
-        const std::array<i64, 3> rc = trace_colour_fx(cs, child, &tr.flags_before, depth + 1, ties, fx);
-        for (int c = 0; c < 3; ++c) col[c] += i64(rshift_round(i128(m.reflection) * rc[c], CF));
+        std::array<i64, 3> wr;
+        for (int c = 0; c < 3; ++c) wr[c] = weigh(w[c], m.reflection);
+        accumulate_fx(cs, child, &tr.flags_before, depth + 1, wr, ties, fx, acc, nullptr);
     }
-    return col;
+}
+
+}  // namespace
+
+std::array<i64, 3> trace_colour_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>* flags,
+                                   int depth, TiePolicy ties, const EffectSet& fx, TraceResult<i64>* first) {
+    std::array<i64, 3> acc{0, 0, 0};
+    accumulate_fx(cs, ray, flags, depth, {kColorOne, kColorOne, kColorOne}, ties, fx, acc, first);
+    return acc;
 }
 
 std::array<double, 3> trace_colour_d(const CompiledScene& cs, const RayD& ray, const std::vector<uint8_t>* flags,
