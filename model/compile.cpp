@@ -421,6 +421,21 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
         if (m.interior.ior < 0.25)
             throw SceneError(where, "interior ior " + fmt_double(m.interior.ior) +
                                         " is below 0.25, the smallest index the refraction unit takes");
+        // Ray weights (docs/effects.md) stay at most 1, so the RTL carries
+        // them in 13 bits: reflection and filter in [0, 1], and the pigment
+        // of a transparent material (its filter x pigment weighs the light
+        // through it) at most 1.
+        if (m.finish.reflection > 1.0)
+            throw SceneError(where, "finish reflection " + fmt_double(m.finish.reflection) +
+                                        " is above 1, the largest ray weight the hardware carries");
+        if (m.pigment.filter > 1.0)
+            throw SceneError(where, "pigment filter " + fmt_double(m.pigment.filter) +
+                                        " is above 1, the largest ray weight the hardware carries");
+        for (int c = 0; c < 3; ++c)
+            if (m.pigment.filter > 0.0 && m.pigment.rgb[c] > 1.0)
+                throw SceneError(where, "pigment colour " + fmt_double(m.pigment.rgb[c]) +
+                                            " of a transparent material is above 1, the largest ray weight"
+                                            " the hardware carries");
         m.phong_size = int(std::lround(m.finish.phong_size));
         if (m.phong_size < 1 || m.phong_size > 1023)
             throw SceneError(where, "finish phong_size " + fmt_double(m.finish.phong_size) +

@@ -235,3 +235,30 @@ TEST(Effects, ConvexSolidsWithCoincidentFacesCastNoShadowOnThemselves) {
                                            << ": self-shadowing on a convex solid";
                 }
 }
+
+// Ray weights stay at most 1 (the RTL carries them in 13 bits): a heavier
+// reflection, filter or transparent pigment is refused, naming the object's
+// position and the limit.
+TEST(Effects, RayWeightsAboveOneAreRefusedWithTheObjectAndTheLimit) {
+    const std::string head = "camera { location <0, 0, -3> look_at <0, 0, 0> }\n";
+    const struct {
+        const char* object;
+        const char* expect;
+    } cases[] = {
+        {"sphere { 0, 1 pigment { color rgb 1 } finish { reflection 1.5 } }", "finish reflection 1.5 is above 1"},
+        {"sphere { 0, 1 pigment { color rgbf <1, 1, 1, 1.2> } }", "pigment filter 1.2 is above 1"},
+        {"sphere { 0, 1 pigment { color rgbf <2, 1, 1, 0.5> } }", "pigment colour 2 of a transparent material"},
+    };
+    for (const auto& c : cases) {
+        try {
+            compile_text(head + c.object + "\n", 24);
+            ADD_FAILURE() << "accepted: " << c.object;
+        } catch (const SceneError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(c.expect), std::string::npos) << what;
+            EXPECT_NE(what.find("effects.pov:2:"), std::string::npos) << what;
+        }
+    }
+    // the limits themselves are accepted
+    EXPECT_NO_THROW(compile_text(head + "sphere { 0, 1 pigment { color rgbf <1, 1, 1, 1> } finish { reflection 1 } }\n", 24));
+}
