@@ -442,6 +442,16 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
                                         " is outside 1..1023 (it is used as an integer exponent)");
     }
 
+    // The RTL's ray tree keeps one pending child per level: a scene that
+    // reflects or refracts may not ask for more levels than it holds.
+    bool spawns = false;
+    for (size_t i = 1; i < cs.materials.size(); ++i)
+        spawns = spawns || cs.materials[i].reflection > 0 || cs.materials[i].filter > 0;
+    if (opt.tree_height > 0 && spawns && cs.max_trace_level > kRtlMaxDepth)
+        throw SceneError(scene_pos, "global_settings max_trace_level " + std::to_string(cs.max_trace_level) +
+                                        " is above the ray tree depth the hardware holds (MAX_DEPTH = " +
+                                        std::to_string(kRtlMaxDepth) + ")");
+
     // 6. Lights and background.
     for (const Light& l : scene.lights) {
         LightInfo li;

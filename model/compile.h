@@ -107,6 +107,7 @@ struct CompileOptions {
 // Defaults of the RTL configuration (csgrt_top's parameters).
 constexpr int kRtlMaxLeaves = 64;
 constexpr int kRtlTreeHeight = 8;
+constexpr int kRtlMaxDepth = 8;   // ray tree levels the RTL's stack holds (MAX_DEPTH)
 
 // Throws SceneError naming the object and the limit for anything that does
 // not fit: range, resolution, hardware limits.

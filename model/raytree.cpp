@@ -157,9 +157,13 @@ EffectSet scene_effects(const CompiledScene& cs) {
     return e;
 }
 
-EffectSet rtl_effects(const CompiledScene& cs) {
+EffectSet rtl_effects(const CompiledScene& cs, bool shadows, bool reflection) {
+    const EffectSet scene = scene_effects(cs);
     EffectSet e;
-    e.specular = scene_effects(cs).specular;
+    e.specular = scene.specular;
+    e.shadows = shadows && scene.shadows;
+    e.reflection = reflection && scene.reflection;
+    e.depth = e.reflection ? cs.max_trace_level : 1;
     return e;
 }
 
