@@ -18,7 +18,7 @@ TEST_SRC   := $(wildcard model/*_test.cpp)
 TEST_OBJ   := $(TEST_SRC:model/%.cpp=$(BUILD)/model/%.o)
 RTL_SRC    := $(wildcard rtl/*.v)
 
-.PHONY: all help deps model render sim test bench-model lint clean synth
+.PHONY: all help deps model render sim sim-run test bench-model lint clean synth
 all: model
 
 # Parameters of the render and simulation targets.
@@ -35,6 +35,9 @@ HW_MAX_LEAVES  := 64
 HW_LEAF_BITS   := 6
 HW_TREE_HEIGHT := 8
 UNITS          ?= 1
+# effect units of a simulation build: `scene` (what the scene uses; one
+# cached build per effect set), `all`, or `none`
+EFFECTS        ?= scene
 
 help:
 	@echo "make deps    install missing packages (apt-get)"
@@ -81,13 +84,13 @@ include tb/tb.mk
 
 # ------------------------------------------- csgrt_top in Verilator
 # $(1): output binary, $(2): BITS, $(3): C++ driver, $(4): extra C++ flags,
-# $(5): extra libraries, $(6): NUM_UNITS. One build per configuration,
-# cached under build/.
+# $(5): extra libraries, $(6): NUM_UNITS, $(7): effect units (-GSHADOWS=..).
+# One build per configuration, cached under build/.
 define VERILATE_TOP
 	@mkdir -p $(1).obj
-	@echo "verilator: building csgrt_top BITS=$(2) for $(notdir $(1)) (once per configuration)"
+	@echo "verilator: building csgrt_top BITS=$(2) $(7) for $(notdir $(1)) (once per configuration)"
 	@verilator --cc --exe --build -O3 -j 2 --trace-fst -Wall -y rtl --top-module csgrt_top \
-	    -GBITS=$(2) -GMAX_LEAVES=$(HW_MAX_LEAVES) -GTREE_HEIGHT=$(HW_TREE_HEIGHT) -GNUM_UNITS=$(6) \
+	    -GBITS=$(2) -GMAX_LEAVES=$(HW_MAX_LEAVES) -GTREE_HEIGHT=$(HW_TREE_HEIGHT) -GNUM_UNITS=$(6) $(7) \
 	    -MAKEFLAGS OPT_FAST=-O2 -MAKEFLAGS OPT_SLOW=-O1 -MAKEFLAGS OPT_GLOBAL=-O2 \
 	    -CFLAGS "-std=c++17 -O2 -I$(CURDIR)/model -I$(CURDIR)/sim $(4)" \
 	    -LDFLAGS "$(CURDIR)/$(BUILD)/libcsgrt.a $(PKG_LIBS) $(5) -pthread" \
@@ -97,20 +100,37 @@ endef
 
 # the frame testbench: whole frames at 16 and 24 bits against the model, and
 # with two intersection lanes
-FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 $(BUILD)/tb/frame24u2
+FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 $(BUILD)/tb/frame24u2 \
+              $(BUILD)/tb/frame16fx $(BUILD)/tb/frame24fx
 FRAME_DEPS := $(RTL_SRC) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a
 $(BUILD)/tb/frame%: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,$*,tb/frame/tb_frame.cpp,-DFRAME_BITS=$* -DFRAME_UNITS=1,-lgtest -lgtest_main,1)
 $(BUILD)/tb/frame24u2: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=2,-lgtest -lgtest_main,2)
+# with the shadow and reflection units (the ray tree)
+FX_UNITS := -GSHADOWS=1 -GREFLECTION=1
+$(BUILD)/tb/frame16fx: $(FRAME_DEPS) | deps
+	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 -DFRAME_UNITS=1 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1,-lgtest -lgtest_main,1,$(FX_UNITS))
+$(BUILD)/tb/frame24fx: $(FRAME_DEPS) | deps
+	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=1 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1,-lgtest -lgtest_main,1,$(FX_UNITS))
 
-# make sim: the project's main job
-SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)/csgrt_sim
+# make sim: the project's main job. The build has the effect units the
+# scene uses (`csgrt units`), or all of them (EFFECTS=all), or none; each
+# combination is its own cached Verilator build.
+SHADOWS    ?= 0
+REFLECTION ?= 0
+SIM_FX  = s$(SHADOWS)r$(REFLECTION)
+SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
-$(BUILD)/sim/b$(BITS)u$(UNITS)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS),,$(UNITS))
+$(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
+	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION))
 
-sim: model $(SIM_BIN)
+sim: model
+	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0,$$($(BUILD)/csgrt units $(SCENE))))" \
+	    && echo "make sim: effect units $$units (EFFECTS=$(EFFECTS))" \
+	    && $(MAKE) --no-print-directory sim-run $$units
+
+sim-run: $(SIM_BIN)
 	@mkdir -p out/sim
 	@$(BUILD)/csgrt compile $(SCENE) -o $(SIM_OUT).bin --bits $(BITS) --width $(WIDTH) --height $(HEIGHT) \
 	    --max-leaves $(HW_MAX_LEAVES) --tree-height $(HW_TREE_HEIGHT)
@@ -153,7 +173,11 @@ bench-model: model
 	@tools/bench_model.sh
 
 # the hard-case stability suite (model/stability.h) and its report
-.PHONY: stability hard-cases
+# the specialised-versus-full simulation builds of the effect scenes
+bench-effects: model
+	@tools/bench_effects.sh
+
+.PHONY: stability hard-cases bench-effects
 stability: model
 	@$(BUILD)/csgrt stability
 

@@ -23,6 +23,8 @@ const char* kUsage =
     "  csgrt render SCENE.pov -o OUT.png [options]   render with the golden model\n"
     "  csgrt compile SCENE.pov -o OUT.bin [options]  write the binary scene image (and OUT.hex)\n"
     "  csgrt info SCENE.pov [options]                print the compiled scene\n"
+    "  csgrt units SCENE.pov                         the RTL effect units the scene needs, as make\n"
+    "                                                variables (SHADOWS=0|1 REFLECTION=0|1)\n"
     "  csgrt stability [--quick] [--transforms N] [--case NAME] [--md FILE]\n"
     "                                                the hard-case stability suite (model/stability.h)\n"
     "options:\n"
@@ -34,6 +36,8 @@ const char* kUsage =
     "  --threads N                worker threads (default: all cores)\n"
     "  --max-leaves N             hardware limit on leaves (compile: default 64, the RTL's)\n"
     "  --tree-height H            hardware classification-tree height (compile: default 8)\n"
+    "  --no-cull                  intersect every leaf for every ray (no bounding-box culling;\n"
+    "                             the image is the same bit for bit, only slower)\n"
     "  --quiet                    no progress line\n";
 
 struct Args {
@@ -74,6 +78,7 @@ Args parse_args(int argc, char** argv) {
         else if (s == "--max-leaves") a.copt.max_leaves = int_arg(s, value());
         else if (s == "--tree-height") a.copt.tree_height = int_arg(s, value());
         else if (s == "--quiet") a.quiet = true;
+        else if (s == "--no-cull") a.copt.cull = false;
         else if (s == "--arith") {
             const std::string v = value();
             if (v == "fixed") a.ropt.arith = Arith::Fixed;
@@ -125,6 +130,14 @@ int main(int argc, char** argv) {
     try {
         const Scene scene = parse_scene_file(a.scene);
         const CompiledScene cs = compile_scene(scene, a.copt);
+        if (a.cmd == "units") {
+            const EffectSet fx = scene_effects(cs);
+            std::printf("SHADOWS=%d REFLECTION=%d\n", int(fx.shadows), int(fx.reflection));
+            if (fx.refraction)
+                std::fprintf(stderr, "csgrt: %s uses refraction, which the RTL does not have yet: its simulation "
+                                     "renders it without\n", a.scene.c_str());
+            return 0;
+        }
         if (a.cmd == "info") {
             print_info(cs);
             std::printf("effects: %s\n", scene_effects(cs).str().c_str());

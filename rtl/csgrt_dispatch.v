@@ -10,6 +10,11 @@
 // A group starts when it is full, or early with the frame's last ray; lanes
 // without a ray in that last group get no pairs.
 //
+// With INFO_W > 0 (secondary rays) every ray comes with an info word for
+// its lane's csgrt_event_sort (inherited flags, t limit, look-behind run):
+// it is pushed into that lane's info FIFO when the ray is accepted, long
+// before the ray's first leaf result reaches the sorter, which pops it.
+//
 // Latency: a candidate's pairs are valid 1 clock after its memory read.
 // Handshake: valid/ready everywhere. The pair registers advance together
 // when every lane holding a pair takes it; pair_ready_i must come from
@@ -20,7 +25,10 @@ module csgrt_dispatch #(
     parameter LEAF_BITS   = 6,
     parameter TREE_HEIGHT = 8,
     parameter NUM_UNITS   = 1,                 // intersection lanes
-    parameter RAY_W       = 24 + 6 * BITS      // {x, y, o, d}
+    parameter RAY_W       = 24 + 6 * BITS,     // {payload, o, d}: o and d in the low 6 BITS
+    parameter INFO_W      = 0,                 // info word per ray (0: none)
+    parameter INFO_DEPTH  = 16,                // info FIFO entries per lane
+    parameter INFO_P      = (INFO_W > 0) ? INFO_W : 1
 ) (
     input  wire                       clk_i,
     input  wire                       rst_ni,
@@ -30,6 +38,11 @@ module csgrt_dispatch #(
     output wire                       ray_ready_o,
     input  wire [RAY_W-1:0]           ray_i,
     input  wire                       ray_last_i,    // the frame's last ray
+    input  wire [INFO_P-1:0]          info_i,        // INFO_W > 0: the ray's info word
+    // per-lane info streams (INFO_W > 0; else valid is 0)
+    output wire [NUM_UNITS-1:0]       info_valid_o,
+    input  wire [NUM_UNITS-1:0]       info_ready_i,
+    output wire [NUM_UNITS*INFO_P-1:0] info_o,
     // the ray queue (to the shading lookup), in ray order
     output wire                       queue_valid_o,
     input  wire                       queue_ready_i,
@@ -70,7 +83,8 @@ module csgrt_dispatch #(
     wire launch  = fill_done_q && cand_ready;       // the filled group starts issuing
     wire accept  = ray_valid_i && ray_ready_o;
 
-    assign ray_ready_o = !fill_done_q && queue_room;
+    wire info_room;   // the accepting lane's info FIFO has room
+    assign ray_ready_o = !fill_done_q && queue_room && info_room;
 
     csgrt_candidates #(.LEAF_BITS(LEAF_BITS)) u_candidates (
         .clk_i, .rst_ni,
@@ -102,6 +116,24 @@ module csgrt_dispatch #(
     // lanes that hold a ray of the filled group: 0 .. fill_count-1
     wire [NUM_UNITS-1:0] fill_lanes;
     genvar k;
+    generate
+        if (INFO_W > 0) begin : g_info
+            wire [NUM_UNITS-1:0] room, here;
+            for (k = 0; k < NUM_UNITS; k = k + 1) begin : g_lane_info
+                assign here[k] = (fill_count_q == k);
+                csgrt_fifo #(.WIDTH(INFO_W), .DEPTH(INFO_DEPTH)) u_info (
+                    .clk_i, .rst_ni,
+                    .valid_i (accept && here[k]), .ready_o (room[k]), .data_i (info_i),
+                    .valid_o (info_valid_o[k]), .ready_i (info_ready_i[k]), .data_o (info_o[k*INFO_W +: INFO_W]));
+            end
+            assign info_room = |(room & here);
+        end else begin : g_no_info
+            assign info_room    = 1'b1;
+            assign info_valid_o = {NUM_UNITS{1'b0}};
+            assign info_o       = {NUM_UNITS*INFO_P{1'b0}};
+            wire unused_info = ^{info_i, info_ready_i};
+        end
+    endgenerate
     generate
         for (k = 0; k < NUM_UNITS; k = k + 1) begin : g_lane
             assign pair_o_o[k*3*BITS +: 3*BITS] = pair_od_q[k*OD + 3*BITS +: 3*BITS];

@@ -31,18 +31,57 @@
 // so before popping them all). While the fill bank holds a complete ray and
 // the drain bank is busy, the input stage fills and then ready_o goes low.
 //
+// Secondary rays (SECONDARY = 1; with SECONDARY = 0 none of this is built:
+// info_ready_o is 0, the info_* inputs and cpos_i are ignored). Every ray,
+// primary or secondary, comes with one record on the info stream
+// (info_valid_i / info_ready_o, valid/ready). The record is read with each
+// leaf result of its ray: ready_o is low while info_valid_i is low (so the
+// record must be valid when the ray's first leaf is accepted, else the
+// input stalls), and the record is popped with the ray's last leaf:
+// info_ready_o = valid_i && ready_o && last_i. Fields:
+//   info_secondary_i  0: a primary ray, handled exactly as with
+//                     SECONDARY = 0 (the other fields are ignored);
+//                     1: a secondary ray (trace_secondary_fx()):
+//   info_flags_i      inherited flag per slot: the origin flag of a slot is
+//                     info_flags_i[slot] (taken with the slot's leaf result;
+//                     a slot without a leaf result is 0 as for primary
+//                     rays); events behind the origin are ignored;
+//   info_tlimit_i     t limit, unsigned t-ahead format (F+1 bits, the t
+//                     of an event ahead): an event ahead is kept only if
+//                     info_tlimit_i == 0 (no limit) or t < info_tlimit_i
+//                     (a limit of 2 or more is given as 0);
+//   info_lb_count_i,  the look-behind run of the parent's hit (csgrt_walker's
+//   info_lb_slot_i,   lb_*_o, entry 0 the most recent crossing before the
+//   info_lb_entering_i, hit, entry k at [k*TREE_HEIGHT +: TREE_HEIGHT] and
+//   info_lb_same_t_i  bit k; count 0..LOOK_BEHIND, entries past it ignored).
+// cpos_i (per leaf result): c > 0, the leaf's quadric is positive at the
+// ray's origin (csgrt_isect's c_o > 0). With the ray's last leaf the
+// origin flags get the look-behind fix-up: entry k is undone iff k < count,
+// entries 0 .. k-1 are undone, and same_t[k] or the origin does not lie
+// beyond its surface, beyond[k] = entering[k] ? !cpos : cpos of the leaf
+// result in slot lb_slot[k] (0 if the ray has none); undoing sets
+// flag[lb_slot[k]] = !entering[k], the older entry winning when a slot
+// appears twice. For a child ray starting at its parent's hit point this
+// turns the parent's flags just before the hit crossing (csgrt_walker's
+// flags_before_o) into the model's TraceResult::flags_before (near side
+// with the look-behind), since c at the child's origin is quadric_at_fx()
+// at the hit point.
+//
 // Latency: a leaf result accepted at edge k is in the fill bank after edge
 // k+1; a ray whose last leaf is accepted at edge k is on the drain side
-// (ray_valid_o) after edge k+2 if the drain bank is free.
+// (ray_valid_o) after edge k+2 if the drain bank is free. The same with
+// SECONDARY = 1.
 // Throughput: one leaf result (up to two events) per clock, no bubble
 // between rays while the walker keeps up. ready_o is a function of
-// registers only.
+// registers only (with SECONDARY = 1: of registers and info_valid_i).
 module csgrt_event_sort #(
     parameter BITS          = 24,   // coordinate width B; t is F+2 = B-1 bits
     parameter MAX_LEAVES    = 64,   // leaves per ray (events: 2*MAX_LEAVES)
     parameter LEAF_BITS     = 6,    // leaf index width (2^LEAF_BITS >= MAX_LEAVES)
     parameter TREE_HEIGHT   = 8,    // slot index width; 2^TREE_HEIGHT origin flags
-    parameter PAYLOAD_WIDTH = 1     // per-ray sideband (>= 1)
+    parameter PAYLOAD_WIDTH = 1,    // per-ray sideband (>= 1)
+    parameter SECONDARY     = 0,    // 1: info stream, secondary rays (see above)
+    parameter LOOK_BEHIND   = 4     // look-behind entries (kLookBehind), >= 1
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,           // synchronous, active low
@@ -62,6 +101,17 @@ module csgrt_event_sort #(
     input  wire                     inside_i,         // inside at t = -infinity
     input  wire                     last_i,           // the ray's last leaf
     input  wire [PAYLOAD_WIDTH-1:0] payload_i,        // taken from the last leaf
+    input  wire                     cpos_i,           // c > 0 at the origin (SECONDARY)
+    // per-ray info (SECONDARY; one record per ray, popped with its last leaf)
+    input  wire                     info_valid_i,
+    output wire                     info_ready_o,
+    input  wire                     info_secondary_i,
+    input  wire [(1<<TREE_HEIGHT)-1:0]          info_flags_i,
+    input  wire [BITS-3:0]                      info_tlimit_i,
+    input  wire [$clog2(LOOK_BEHIND+1)-1:0]     info_lb_count_i,
+    input  wire [LOOK_BEHIND*TREE_HEIGHT-1:0]   info_lb_slot_i,
+    input  wire [LOOK_BEHIND-1:0]               info_lb_entering_i,
+    input  wire [LOOK_BEHIND-1:0]               info_lb_same_t_i,
     // sorted ray (drain bank)
     output wire                     ray_valid_o,      // a ray is on the drain side
     output wire [(1<<TREE_HEIGHT)-1:0] ray_flags_o,   // origin flag per slot
@@ -102,8 +152,9 @@ module csgrt_event_sort #(
     wire in_fire = valid_i && ready_o;
     wire ev0 = count_i != 2'd0;
     wire ev1 = count_i == 2'd2;
-    wire ahead0  = ev0 && range0_i == R_FINITE && !t0_i[TW-1];
-    wire ahead1  = ev1 && range1_i == R_FINITE && !t1_i[TW-1];
+    wire keep0, keep1;                     // within the t limit (secondary rays)
+    wire ahead0  = ev0 && range0_i == R_FINITE && !t0_i[TW-1] && keep0;
+    wire ahead1  = ev1 && range1_i == R_FINITE && !t1_i[TW-1] && keep1;
     wire behind0 = ev0 && (range0_i == R_NEGINF || (range0_i == R_FINITE && t0_i[TW-1]));
     wire behind1 = ev1 && (range1_i == R_NEGINF || (range1_i == R_FINITE && t1_i[TW-1]));
     wire [DW-1:0] e0 = {t0_i[UW-1:0], leaf_i, slot_i, enter0_i};
@@ -131,7 +182,9 @@ module csgrt_event_sort #(
 
     wire handover = full_q && !busy_q;
     wire s1_adv   = s1_valid_q && (!full_q || !busy_q);
-    assign ready_o = !s1_valid_q || !full_q || !busy_q;
+    wire in_ready = !s1_valid_q || !full_q || !busy_q;
+    wire flag_in;                          // the slot's origin flag
+    wire [NS-1:0] fix_we, fix_val;         // look-behind fix-up (SECONDARY)
 
     // ---- insertion into the fill bank (emptied on a handover) ------------
     wire [NB-1:0] base_cnt = handover ? {NB{1'b0}} : fcnt_q;
@@ -176,6 +229,76 @@ module csgrt_event_sort #(
     assign ev_slot_o     = drain_q[1 +: H];
     assign ev_entering_o = drain_q[0];
 
+    // ---- secondary rays: info stream, t limit, inherited flags, look-behind
+    localparam LBK = LOOK_BEHIND;
+    localparam CB  = $clog2(LOOK_BEHIND + 1);
+    wire flag_primary = inside_i ^ behind0 ^ behind1;
+    genvar k;
+    generate
+        if (SECONDARY != 0) begin : g_sec
+            wire sec = info_secondary_i;
+            wire lim = info_tlimit_i != {UW{1'b0}};
+            assign ready_o      = in_ready && info_valid_i;
+            assign info_ready_o = valid_i && ready_o && last_i;   // popped with the last leaf
+            assign keep0   = !sec || !lim || t0_i[UW-1:0] < info_tlimit_i;
+            assign keep1   = !sec || !lim || t1_i[UW-1:0] < info_tlimit_i;
+            assign flag_in = sec ? info_flags_i[slot_i] : flag_primary;
+
+            // cpos of the leaf in each entry's slot, accumulated over the
+            // ray's leaves (acc_q: those accepted so far; one leaf per slot)
+            reg  [LBK-1:0] acc_q;
+            wire [LBK-1:0] cp, uk, und;
+            for (k = 0; k < LBK; k = k + 1) begin : g_lb
+                wire hit_slot = slot_i == info_lb_slot_i[k*H +: H];
+                wire in_run   = {{(32-CB){1'b0}}, info_lb_count_i} > k;
+                assign cp[k]  = acc_q[k] || (cpos_i && hit_slot);
+                // undone: at the hit's t, or the origin is not beyond the
+                // surface (entering: Q > 0, leaving: Q <= 0)
+                assign uk[k]  = sec && in_run &&
+                                (info_lb_same_t_i[k] || (info_lb_entering_i[k] ? cp[k] : !cp[k]));
+                assign und[k] = &uk[k:0];      // and every more recent entry too
+            end
+
+            // the fix-up travels with the ray's last leaf through the input stage
+            reg [LBK-1:0]   s1_und_q, s1_lbent_q;
+            reg [LBK*H-1:0] s1_lbslot_q;
+            always @(posedge clk_i) begin
+                if (in_fire) acc_q <= last_i ? {LBK{1'b0}} : cp;
+                if (in_fire && last_i) begin
+                    s1_und_q    <= und;
+                    s1_lbslot_q <= info_lb_slot_i;
+                    s1_lbent_q  <= info_lb_entering_i;
+                end
+                if (!rst_ni) acc_q <= {LBK{1'b0}};
+            end
+            // most recent entry first: an older undone entry of the same slot wins
+            reg [NS-1:0] we, val;
+            integer e;
+            always @* begin
+                we  = {NS{1'b0}};
+                val = {NS{1'b0}};
+                for (e = 0; e < LBK; e = e + 1)
+                    if (s1_und_q[e]) begin
+                        we[s1_lbslot_q[e*H +: H]]  = 1'b1;
+                        val[s1_lbslot_q[e*H +: H]] = !s1_lbent_q[e];
+                    end
+            end
+            assign fix_we  = (s1_adv && s1_last_q) ? we : {NS{1'b0}};
+            assign fix_val = val;
+        end else begin : g_pri
+            assign ready_o      = in_ready;
+            assign info_ready_o = 1'b0;
+            assign keep0   = 1'b1;
+            assign keep1   = 1'b1;
+            assign flag_in = flag_primary;
+            assign fix_we  = {NS{1'b0}};
+            assign fix_val = {NS{1'b0}};
+            wire unused_sec = ^{cpos_i, info_valid_i, info_secondary_i, info_flags_i, info_tlimit_i,
+                                info_lb_count_i, info_lb_slot_i, info_lb_entering_i, info_lb_same_t_i};
+        end
+    endgenerate
+
+    integer fs;
     always @(posedge clk_i) begin
         // input stage
         if (in_fire) begin
@@ -183,7 +306,7 @@ module csgrt_event_sort #(
             s1_a_q    <= (swap || !ahead0) ? e1 : e0;
             s1_b_q    <= swap ? e0 : e1;
             s1_slot_q <= slot_i;
-            s1_flag_q <= inside_i ^ behind0 ^ behind1;
+            s1_flag_q <= flag_in;
             s1_last_q <= last_i;
             s1_pay_q  <= payload_i;
         end
@@ -198,6 +321,10 @@ module csgrt_event_sort #(
             fflags_q[s1_slot_q] <= s1_flag_q;
             if (s1_last_q) fpay_q <= s1_pay_q;
         end
+        // the look-behind fix-up with a secondary ray's last leaf
+        // (fix_we is constant zero when SECONDARY = 0)
+        for (fs = 0; fs < NS; fs = fs + 1)
+            if (fix_we[fs]) fflags_q[fs] <= fix_val[fs];
         // drain bank
         if (handover) begin
             drain_q  <= fill_q;
@@ -225,9 +352,9 @@ module csgrt_event_sort #(
     end
 
     generate
-        if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2) begin : g_bad_param
+        if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2 || LOOK_BEHIND < 1) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_event_sort needs MAX_LEAVES >= 1 and 2^LEAF_BITS >= MAX_LEAVES");
+                $display("ERROR %m: csgrt_event_sort needs MAX_LEAVES >= 1, 2^LEAF_BITS >= MAX_LEAVES and LOOK_BEHIND >= 1");
                 $finish;
             end
         end

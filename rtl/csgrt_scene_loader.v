@@ -37,6 +37,7 @@ module csgrt_scene_loader #(
     output reg  [11:0]                height_o,
     output reg  [LEAF_BITS:0]         num_leaves_o,
     output reg  [3:0]                 num_lights_o,
+    output reg  [7:0]                 max_trace_o,      // global_settings max_trace_level
     // camera (docs/numerics.md section 2)
     output reg  [3*BITS-1:0]          cam_origin_o,
     output reg  [3*64-1:0]            cam_base_o,
@@ -59,17 +60,18 @@ module csgrt_scene_loader #(
     output reg  [10*BITS-1:0]         leaf_b_coef_o,
     // material memory read port (material index 1..; 0 reads entry 0)
     input  wire [7:0]                 mat_addr_i,
-    output reg  [7*16+10-1:0]         mat_o        // the record below
+    output reg  [9*16+10-1:0]         mat_o        // the record below
 );
     // Material record layout on mat_o (16-bit fields, 12 fraction bits):
     //   [15:0] r  [31:16] g  [47:32] b  [63:48] ambient  [79:64] diffuse
     //   [95:80] phong  [111:96] reflection  [121:112] phong_size
-    localparam MAT_W = 7 * 16 + 10;
+    //   [137:122] filter  [153:138] ior
+    localparam MAT_W = 9 * 16 + 10;
 
     // header word indices (model/scene_image.h, enum SceneHeader)
-    // (5 PROGRAM, 8 MAX_TRACE and 9 STACK are not needed by this configuration)
+    // (5 PROGRAM and 9 STACK are not needed by this configuration)
     localparam H_MAGIC = 0, H_VERSION = 1, H_BITS = 2, H_SIZE = 3, H_LEAVES = 4,
-               H_MATERIALS = 6, H_LIGHTS = 7, H_OFF_CAMERA = 10,
+               H_MATERIALS = 6, H_LIGHTS = 7, H_MAX_TRACE = 8, H_OFF_CAMERA = 10,
                H_OFF_LIGHTS = 11, H_OFF_MATERIALS = 12, H_OFF_LEAVES = 13, H_OFF_PROGRAM = 14,
                H_OFF_TREE = 15, H_TOTAL = 16, HEADER_WORDS = 17;
     localparam [31:0] MAGIC = 32'h52475343, VERSION = 32'd1;
@@ -90,7 +92,7 @@ module csgrt_scene_loader #(
     reg [31:0]            item_q;
     reg [3:0]             field_q;
     reg [10*BITS-1:0]     coef_acc_q;     // the leaf being assembled
-    reg [MAT_W-11:0]      mat_acc_q;      // the material being assembled (without phong_size)
+    reg [MAT_W-11:0]      mat_acc_q;      // the material being assembled: fields without phong_size
 
     wire in_camera    = idx_q >= off_camera_q    && idx_q < off_lights_q;
     wire in_lights    = idx_q >= off_lights_q    && idx_q < off_materials_q;
@@ -143,6 +145,7 @@ module csgrt_scene_loader #(
                                          if (w > MAX_LIGHTS) error_o <= 4'd4;
                                          num_lights_o <= w[3:0];
                                      end
+                    H_MAX_TRACE:     max_trace_o     <= (w > 32'd255) ? 8'd255 : w[7:0];
                     H_OFF_CAMERA:    off_camera_q    <= w;
                     H_OFF_LIGHTS:    off_lights_q    <= w;
                     H_OFF_MATERIALS: off_materials_q <= w;
@@ -191,9 +194,12 @@ module csgrt_scene_loader #(
                     4'd5: mat_acc_q[64 +: 16] <= w[15:0];
                     4'd6: mat_acc_q[80 +: 16] <= w[15:0];
                     4'd7: mat_acc_q[96 +: 16] <= w[15:0];
+                    4'd3: mat_acc_q[112 +: 16] <= w[15:0];   // filter
+                    4'd8: mat_acc_q[128 +: 16] <= w[15:0];   // ior
                     4'd9: if (it_now < MAX_MATERIALS)
-                              mat_mem[it_now[7:0] + 8'd1] <= {w[9:0], mat_acc_q[111:0]};
-                    default: ;   // filter, ior: used by the effects, not yet
+                              mat_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], w[9:0],
+                                                              mat_acc_q[111:0]};
+                    default: ;
                 endcase
             end
             if (in_leaves) begin

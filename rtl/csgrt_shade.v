@@ -65,7 +65,15 @@
 module csgrt_shade #(
     parameter BITS       = 24,                // coordinate width B (12..32)
     parameter MAX_LIGHTS = 8,                 // point lights (>= 1)
-    parameter LUT_FILE   = "rtl/srgb_lut.hex" // sRGB table (csgrt_srgb)
+    parameter LUT_FILE   = "rtl/srgb_lut.hex", // sRGB table (csgrt_srgb)
+    // For the ray tree (csgrt_raytree): LINEAR_OUT = 1 outputs the linear
+    // colour and its phong part (m_local_o, m_spec_o, before the clamp; no
+    // sRGB stage: one clock less) instead of m_r/g/b_o; EXT_LIGHT = 1 takes
+    // each light's colour from lc_color_i, which the caller drives for the
+    // item's tag (the pixel's x field, lc_tag_o) and light (lc_k_o) in the
+    // same clock: the light colour scaled by what its shadow ray brought back.
+    parameter LINEAR_OUT = 0,
+    parameter EXT_LIGHT  = 0
 ) (
     input  wire                          clk_i,
     input  wire                          rst_ni,         // synchronous, active low
@@ -96,7 +104,13 @@ module csgrt_shade #(
     output wire [11:0]                   m_y_o,
     output wire [7:0]                    m_r_o,
     output wire [7:0]                    m_g_o,
-    output wire [7:0]                    m_b_o
+    output wire [7:0]                    m_b_o,
+    output wire [3*31-1:0]               m_local_o,      // LINEAR_OUT: col_c = rnd(pigment intensity) + spec, 12 frac
+    output wire [3*26-1:0]               m_spec_o,       // LINEAR_OUT: spec_c, 12 frac
+    // EXT_LIGHT: the light colour of the item being issued
+    output wire [11:0]                   lc_tag_o,
+    output wire [$clog2(MAX_LIGHTS+1)-1:0] lc_k_o,
+    input  wire [3*16-1:0]               lc_color_i
 );
 
     // ---- formats -------------------------------------------------------------
@@ -380,7 +394,9 @@ module csgrt_shade #(
     localparam LIDX = $clog2(MAX_LIGHTS * 3 * B + 1) + 1;   // index width into the light vectors
     wire [LIDX-1:0]  k_l = {{(LIDX-KW_L){1'b0}}, k_q};
     wire [3*GW-1:0]  lv_d;
-    wire [3*16-1:0]  lcol_d = light_color_i[k_l * 48 +: 48];
+    wire [3*16-1:0]  lcol_d = (EXT_LIGHT != 0) ? lc_color_i : light_color_i[k_l * 48 +: 48];
+    assign lc_tag_o = sq_pix[11:0];
+    assign lc_k_o   = {{($clog2(MAX_LIGHTS+1)-KW_L){1'b0}}, k_q};
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_b1
             wire [B-1:0]   lp = light_pos_i[(k_l * 3 + i) * B +: B];
@@ -679,52 +695,80 @@ module csgrt_shade #(
 
     // ---- C4: colour, background for a miss, clamp to [0, 4095] ---------------------------
     wire [3*12-1:0] idx_d;
+    wire [3*CLW-1:0] col_lin;   // the hit's colour before the clamp (LINEAR_OUT)
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_c4
             wire [CPW-1:0] pr = cp[i*CPW +: CPW] + {{(CPW-12){1'b0}}, 1'b1, 11'd0};
             wire unused_pr = ^{pr[11:0]};
             wire [CLW-1:0] col_hit = {{(CLW-(CPW-12)){pr[CPW-1]}}, pr[CPW-1:12]}
                                    + {{(CLW-SAW){1'b0}}, c3_spec[i*SAW +: SAW]};
+            assign col_lin[i*CLW +: CLW] = col_hit;
             wire [CLW-1:0] col = c3_pix[PX_HIT] ? col_hit
                                : {{(CLW-16){1'b0}}, background_i[i*16 +: 16]};
             assign idx_d[i*12 +: 12] = col[CLW-1] ? 12'd0
                                      : (col[CLW-2:12] != {(CLW-13){1'b0}}) ? 12'd4095 : col[11:0];
         end
     endgenerate
-    reg            c4_valid_q;
-    reg [23:0]     c4_xy_q;
-    reg [35:0]     c4_idx_q;
-    always @(posedge clk_i) begin
-        if (!rst_ni) c4_valid_q <= 1'b0;
-        else if (en_b) c4_valid_q <= c3_valid;
-        if (en_b) begin
-            c4_idx_q <= idx_d;
-            c4_xy_q  <= c3_pix[0 +: 24];
-        end
-    end
-    wire unused_c3 = ^c3_pix[PIXW-1:25];
-
-    // ---- C5: sRGB tables ---------------------------------------------------------------
-    wire [23:0] code;
-    reg         c5_valid_q;
-    reg [23:0]  c5_xy_q;
     generate
+        if (LINEAR_OUT != 0) begin : g_linear
+            // ---- C4: the linear colour and its phong part, registered ------------------
+            reg               c4_valid_q;
+            reg [23:0]        c4_xy_q;
+            reg [3*CLW-1:0]   c4_col_q;
+            reg [3*SAW-1:0]   c4_spec_q;
+            always @(posedge clk_i) begin
+                if (!rst_ni) c4_valid_q <= 1'b0;
+                else if (en_b) c4_valid_q <= c3_valid;
+                if (en_b) begin
+                    c4_col_q  <= col_lin;
+                    c4_spec_q <= c3_spec;
+                    c4_xy_q   <= c3_pix[0 +: 24];
+                end
+            end
+            wire unused_idx = ^idx_d;
+            csgrt_skid #(.WIDTH(24 + 3 * CLW + 3 * SAW)) u_skid_out (
+                .clk_i(clk_i), .rst_ni(rst_ni),
+                .valid_i(c4_valid_q), .ready_o(en_b), .data_i({c4_spec_q, c4_col_q, c4_xy_q}),
+                .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_spec_o, m_local_o, m_y_o, m_x_o}));
+            assign {m_r_o, m_g_o, m_b_o} = 24'd0;
+        end else begin : g_srgb
+        reg            c4_valid_q;
+        reg [23:0]     c4_xy_q;
+        reg [35:0]     c4_idx_q;
+        always @(posedge clk_i) begin
+            if (!rst_ni) c4_valid_q <= 1'b0;
+            else if (en_b) c4_valid_q <= c3_valid;
+            if (en_b) begin
+                c4_idx_q <= idx_d;
+                c4_xy_q  <= c3_pix[0 +: 24];
+            end
+        end
+        wire unused_c3 = ^c3_pix[PIXW-1:25];
+
+        // ---- C5: sRGB tables ---------------------------------------------------------------
+        wire [23:0] code;
+        reg         c5_valid_q;
+        reg [23:0]  c5_xy_q;
         for (i = 0; i < 3; i = i + 1) begin : g_c5
             csgrt_srgb #(.LUT_FILE(LUT_FILE)) u_lut (
                 .clk_i(clk_i), .ce_i(en_b), .idx_i(c4_idx_q[i*12 +: 12]), .code_o(code[i*8 +: 8]));
         end
-    endgenerate
-    always @(posedge clk_i) begin
-        if (!rst_ni) c5_valid_q <= 1'b0;
-        else if (en_b) c5_valid_q <= c4_valid_q;
-        if (en_b) c5_xy_q <= c4_xy_q;
-    end
+        always @(posedge clk_i) begin
+            if (!rst_ni) c5_valid_q <= 1'b0;
+            else if (en_b) c5_valid_q <= c4_valid_q;
+            if (en_b) c5_xy_q <= c4_xy_q;
+        end
 
-    // ---- output skid --------------------------------------------------------------------
-    csgrt_skid #(.WIDTH(48)) u_skid_out (
-        .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(c5_valid_q), .ready_o(en_b), .data_i({code, c5_xy_q}),
-        .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_b_o, m_g_o, m_r_o, m_y_o, m_x_o}));
+        // ---- output skid --------------------------------------------------------------------
+        csgrt_skid #(.WIDTH(48)) u_skid_out (
+            .clk_i(clk_i), .rst_ni(rst_ni),
+            .valid_i(c5_valid_q), .ready_o(en_b), .data_i({code, c5_xy_q}),
+            .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_b_o, m_g_o, m_r_o, m_y_o, m_x_o}));
+        assign m_local_o = {3*CLW{1'b0}};
+        assign m_spec_o  = {3*SAW{1'b0}};
+        wire unused_lin = ^col_lin;
+        end
+    endgenerate
 
     generate
         if (BITS < 12 || BITS > 32 || MAX_LIGHTS < 1) begin : g_bad_param

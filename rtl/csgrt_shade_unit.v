@@ -4,13 +4,9 @@
 // truncated toward zero, |u_i| < 2^15 (17-bit signed output). The caller
 // guarantees sum v^2 < 2^34 (the model's bound; it throws otherwise).
 //
-// Pipeline (every register on ce_i, a valid bit alongside):
-//   M (2)   v_i^2, three csgrt_mul VW x VW
-//   S (1)   sum of squares
-//   Q (17)  csgrt_sqrt_core
-//   P (1)   L = root + 1, numerators v << 15
-//   D (17)  three csgrt_div_core, 16 quotient bits
-//   O (1)   signed quotients
+// A thin wrapper of csgrt_unit (FRAC 15, SQRT_STAGES 17), which has the
+// pipeline: M (2) squares, S (1) sum, Q (17) square root, P (1) L = root + 1,
+// D (17) divisions, O (1) signed output.
 // Latency: 39 clocks, counted in enabled clocks. Handshake: none (the
 // enclosing pipeline's global stall ce_i). Multipliers: 3.
 module csgrt_shade_unit #(
@@ -28,117 +24,14 @@ module csgrt_shade_unit #(
     output wire [USER_WIDTH-1:0] user_o
 );
 
-    localparam SQ   = 17;          // square-root stages (kShadeSqrtStages)
-    localparam QB   = 16;          // quotient bits (SF + 1)
-    localparam PW   = 2 * VW;      // square
-    localparam NUMW = VW + 15;     // v << SF
-    localparam DENW = SQ + 2;      // L <= 2^17, signed
-    localparam UW   = USER_WIDTH;
-    localparam MW   = UW + 3 * VW; // sideband with v
+    // the square root (the length before +1) is not needed by shading;
+    // synthesis removes its registers
+    wire [16:0] unused_root;
 
-    genvar i;
-
-    // ---- M: squares -----------------------------------------------------------
-    wire [3*PW-1:0] sq;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_sq
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(VW), .B_WIDTH(VW)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
-                .a_i(v_i[i*VW +: VW]), .b_i(v_i[i*VW +: VW]), .valid_o(unused_v), .p_o(sq[i*PW +: PW]));
-        end
-    endgenerate
-    wire          m_valid;
-    wire [MW-1:0] m_side;
-    csgrt_delay #(.WIDTH(MW), .STAGES(2)) u_dly_m (
+    csgrt_unit #(.VW(VW), .FRAC(15), .SQRT_STAGES(17), .USER_WIDTH(USER_WIDTH)) u_unit (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
-        .data_i({user_i, v_i}), .valid_o(m_valid), .data_o(m_side));
-
-    // ---- S: sum (< 2^34 by the caller's bound) ----------------------------------
-    wire [PW+1:0] sum = {2'b00, sq[0 +: PW]} + {2'b00, sq[PW +: PW]} + {2'b00, sq[2*PW +: PW]};
-    reg            s_valid_q;
-    reg [2*SQ-1:0] s_n_q;
-    reg [MW-1:0]   s_side_q;
-    always @(posedge clk_i) begin
-        if (!rst_ni) s_valid_q <= 1'b0;
-        else if (ce_i) s_valid_q <= m_valid;
-        if (ce_i) begin
-            s_n_q    <= sum[2*SQ-1:0];
-            s_side_q <= m_side;
-        end
-    end
-    generate
-        if (PW + 2 > 2 * SQ) begin : g_sum_top
-            wire unused_sum = ^sum[PW+1:2*SQ];
-        end
-    endgenerate
-
-    // ---- Q: square root ---------------------------------------------------------------
-    wire          q_valid;
-    wire [SQ-1:0] q_root;
-    wire [MW-1:0] q_side;
-    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(MW)) u_sqrt (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(s_valid_q),
-        .n_i(s_n_q), .user_i(s_side_q), .valid_o(q_valid), .root_o(q_root), .user_o(q_side));
-
-    // ---- P: L = root + 1, numerators ------------------------------------------------------
-    reg              p_valid_q;
-    reg [DENW-1:0]   p_len_q;
-    reg [3*NUMW-1:0] p_num_q;
-    reg [UW-1:0]     p_user_q;
-    always @(posedge clk_i) begin
-        if (!rst_ni) p_valid_q <= 1'b0;
-        else if (ce_i) p_valid_q <= q_valid;
-        if (ce_i) begin
-            p_len_q  <= {2'b00, q_root} + {{(DENW-1){1'b0}}, 1'b1};
-            p_num_q  <= {q_side[2*VW +: VW], 15'd0, q_side[VW +: VW], 15'd0, q_side[0 +: VW], 15'd0};
-            p_user_q <= q_side[3*VW +: UW];
-        end
-    end
-
-    // ---- D: divisions --------------------------------------------------------------------
-    wire            d_valid;
-    wire [3*QB-1:0] d_mag;
-    wire [2:0]      d_neg, d_ovf;
-    wire [UW-1:0]   d_user;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_div
-            if (i == 0) begin : g_main
-                csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(UW)) u_div (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(p_valid_q),
-                    .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(p_user_q),
-                    .valid_o(d_valid), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
-                    .user_o(d_user));
-            end else begin : g_other
-                wire unused_v, unused_u;
-                csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(p_valid_q),
-                    .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(1'b0),
-                    .valid_o(unused_v), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
-                    .user_o(unused_u));
-            end
-        end
-    endgenerate
-    // |v_i| < L: never overflows
-    wire unused_ovf = ^d_ovf;
-
-    // ---- O: signed output -----------------------------------------------------------------
-    reg            o_valid_q;
-    reg [3*17-1:0] o_u_q;
-    reg [UW-1:0]   o_user_q;
-    integer k;
-    always @(posedge clk_i) begin
-        if (!rst_ni) o_valid_q <= 1'b0;
-        else if (ce_i) o_valid_q <= d_valid;
-        if (ce_i) begin
-            for (k = 0; k < 3; k = k + 1)
-                o_u_q[k*17 +: 17] <= d_neg[k] ? 17'd0 - {1'b0, d_mag[k*QB +: QB]} : {1'b0, d_mag[k*QB +: QB]};
-            o_user_q <= d_user;
-        end
-    end
-    assign valid_o = o_valid_q;
-    assign u_o     = o_u_q;
-    assign user_o  = o_user_q;
+        .v_i(v_i), .user_i(user_i),
+        .valid_o(valid_o), .u_o(u_o), .root_o(unused_root), .user_o(user_o));
 
     generate
         if (VW < 2 || VW > 19 || USER_WIDTH < 1) begin : g_bad_param

@@ -6,6 +6,16 @@
 //                                          |                   |
 //                                       ray queue ------> lookup -> shade -> pixels
 //
+// With shadows or reflection (SHADOWS, REFLECTION; a build has only the
+// units its parameters ask for) the camera's rays and the secondary rays
+// go through csgrt_raytree, which schedules each pixel's ray tree:
+//
+//   camera -> raytree -> dispatch -> isect -> walk unit -> lookup -> raytree
+//               |  ^                                                 |  ^
+//               |  +-- spawn (children of a hit) <-------------------+  |
+//               +---> shade (linear, scaled light colours) -> contrib --+
+//               +---> pixels
+//
 // Handshakes: the scene image enters as 32-bit words (load_*), one per
 // clock; after loaded_o, a start_i pulse renders one frame; pixels leave on
 // a valid/ready stream in raster order and nothing is lost or duplicated
@@ -21,6 +31,11 @@ module csgrt_top #(
     parameter MAX_MATERIALS = 255,   // materials besides air
     parameter NUM_UNITS     = 1,     // intersection lanes, each an isect + walk unit
     parameter LUT_FILE      = "rtl/srgb_lut.hex",
+    // effects (docs/effects.md): absent from the netlist when 0
+    parameter SHADOWS       = 0,     // shadow rays to every light
+    parameter REFLECTION    = 0,     // mirror reflection
+    parameter CONTEXTS      = 8,     // pixels in flight in the ray tree
+    parameter MAX_DEPTH     = 8,     // ray tree depth the stack holds (>= max_trace_level)
     // derived
     parameter LEAF_BITS     = $clog2(MAX_LEAVES),
     parameter SLOTS         = 1 << TREE_HEIGHT
@@ -48,14 +63,26 @@ module csgrt_top #(
     output reg  [63:0] stat_cycles_o,
     output reg  [63:0] stat_pairs_o     // pairs issued, summed over the lanes
 );
-    localparam RAY_W = 24 + 6 * BITS;          // {x, y, o, d}
+    localparam EFFECTS = (SHADOWS != 0) || (REFLECTION != 0);
+    localparam LOOK_BEHIND = 4;                // model: kLookBehind
+    localparam LBC    = $clog2(LOOK_BEHIND + 1);
+    localparam RUN_W  = LBC + LOOK_BEHIND * (TREE_HEIGHT + 2);   // {same_t, entering, slots, count}
+    localparam DIST_W = BITS + 1;              // csgrt_spawn's shadow distance (F+4 bits)
+    localparam CB     = $clog2(CONTEXTS);
+    localparam KW     = (MAX_LIGHTS > 1) ? $clog2(MAX_LIGHTS) : 1;
+    localparam REC_W  = 1 + CB + KW + 48 + 4 + 48 + 5 + DIST_W;  // csgrt_raytree's ray record
+    localparam INFO_W = EFFECTS ? 1 + SLOTS + (BITS - 2) + RUN_W : 0;
+    localparam INFO_P = EFFECTS ? INFO_W : 1;
+    localparam PAY_W  = EFFECTS ? REC_W : 24;  // what a ray carries beside o, d: record, or {x, y}
+    localparam RAY_W  = PAY_W + 6 * BITS;      // {payload, o, d}
     localparam SIDE_W = 1 + TREE_HEIGHT + LEAF_BITS;   // {last, slot, leaf} beside a pair
-    localparam MAT_W = 7 * 16 + 10;
+    localparam MAT_W = 9 * 16 + 10;
 
     // ------------------------------------------------------------------ scene
     wire [11:0]               width, height;
     wire [LEAF_BITS:0]        num_leaves;
     wire [3:0]                num_lights;
+    wire [7:0]                max_trace;
     wire [3*BITS-1:0]         cam_origin;
     wire [3*64-1:0]           cam_base, cam_dx, cam_dy;
     wire [3*16-1:0]           background;
@@ -78,6 +105,7 @@ module csgrt_top #(
         .word_valid_i (load_valid_i), .word_ready_o (load_ready_o), .word_i (load_word_i),
         .loaded_o, .error_o (load_error_o),
         .width_o (width), .height_o (height), .num_leaves_o (num_leaves), .num_lights_o (num_lights),
+        .max_trace_o (max_trace),
         .cam_origin_o (cam_origin), .cam_base_o (cam_base), .cam_dx_o (cam_dx), .cam_dy_o (cam_dy),
         .background_o (background), .light_pos_o (light_pos), .light_col_o (light_col),
         .node_op_o (node_op), .slot_material_o (slot_material), .slot_used_o (slot_used),
@@ -112,11 +140,20 @@ module csgrt_top #(
     wire [LEAF_BITS-1:0]   pair_leaf;
     wire [TREE_HEIGHT-1:0] pair_slot;
 
-    csgrt_dispatch #(.BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT), .NUM_UNITS(U)) u_dispatch (
+    // rays into the dispatcher: the camera's, or the ray tree's
+    wire                   d_valid, d_ready, d_last;
+    wire [RAY_W-1:0]       d_ray;
+    wire [INFO_P-1:0]      d_info;
+    wire [U-1:0]           lane_info_valid, lane_info_ready;
+    wire [U*INFO_P-1:0]    lane_info;
+
+    csgrt_dispatch #(.BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT), .NUM_UNITS(U),
+                     .RAY_W(RAY_W), .INFO_W(INFO_W)) u_dispatch (
         .clk_i, .rst_ni,
         .num_leaves_i (num_leaves),
-        .ray_valid_i (cam_valid), .ray_ready_o (cam_ready), .ray_i ({cam_x, cam_y, cam_o, cam_d}),
-        .ray_last_i (cam_last),
+        .ray_valid_i (d_valid), .ray_ready_o (d_ready), .ray_i (d_ray),
+        .ray_last_i (d_last), .info_i (d_info),
+        .info_valid_o (lane_info_valid), .info_ready_i (lane_info_ready), .info_o (lane_info),
         .queue_valid_o (queue_valid), .queue_ready_i (queue_ready), .queue_ray_o (queue_ray),
         .leaf_addr_o (leaf_a_addr), .leaf_coef_i (leaf_a_coef), .leaf_slot_i (leaf_a_slot),
         .pair_valid_o (pair_valid), .pair_ready_i (pair_ready),
@@ -131,6 +168,8 @@ module csgrt_top #(
     wire [U*(BITS-1)-1:0]    w_t;
     wire [U*LEAF_BITS-1:0]   w_leaf;
     wire [U*8-1:0]           w_from, w_to;
+    wire [U*SLOTS-1:0]       w_near, w_after;
+    wire [U*RUN_W-1:0]       w_run;
     wire [U-1:0]             l_res_valid, l_res_ready;
     wire [U*SIDE_W-1:0]      l_res_side;
     wire [U*2-1:0]           l_res_count, l_res_range0, l_res_range1;
@@ -144,8 +183,24 @@ module csgrt_top #(
             wire [BITS+2:0]        res_b;
             wire [BITS+5:0]        res_c;
             wire [TREE_HEIGHT-1:0] w_slot;
-            wire [SLOTS-1:0]       w_flags_before;
             wire                   w_payload;
+            // the ray's info word (csgrt_raytree's info(): {run, tlimit, flags, secondary})
+            wire [INFO_P-1:0]      inf = lane_info[k*INFO_P +: INFO_P];
+            wire                   inf_secondary, inf_valid;
+            wire [SLOTS-1:0]       inf_flags;
+            wire [BITS-3:0]        inf_tlimit;
+            wire [RUN_W-1:0]       inf_run;
+            wire                   inf_ready;
+            if (EFFECTS) begin : g_info
+                assign {inf_run, inf_tlimit, inf_flags, inf_secondary} = inf;
+                assign inf_valid = lane_info_valid[k];
+                assign lane_info_ready[k] = inf_ready;
+            end else begin : g_no_info
+                assign {inf_run, inf_tlimit, inf_flags, inf_secondary} = {(RUN_W + BITS - 2 + SLOTS + 1){1'b0}};
+                assign inf_valid = 1'b0;
+                assign lane_info_ready[k] = 1'b0;
+                wire unused_inf = ^{inf, lane_info_valid[k], inf_ready};
+            end
 
             csgrt_isect #(.BITS(BITS), .LEAF_WIDTH(SIDE_W)) u_isect (
                 .clk_i, .rst_ni,
@@ -160,10 +215,12 @@ module csgrt_top #(
                 .enter1_o (l_res_enter1[k]),
                 .inside_o (l_res_inside[k]), .a_o (res_a), .b_o (res_b), .c_o (res_c)
             );
+            // Q at the ray's origin is positive (the look-behind of secondary rays)
+            wire cpos = !res_c[BITS+5] && (res_c != {(BITS+6){1'b0}});
 
             csgrt_walk_unit #(
                 .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
-                .MAT_BITS(8), .PAYLOAD_WIDTH(1)
+                .MAT_BITS(8), .PAYLOAD_WIDTH(1), .SECONDARY(EFFECTS ? 1 : 0), .LOOK_BEHIND(LOOK_BEHIND)
             ) u_walk (
                 .clk_i, .rst_ni,
                 .ties_regular_i, .node_op_i (node_op), .slot_mat_i (slot_material), .slot_used_i (slot_used),
@@ -176,15 +233,26 @@ module csgrt_top #(
                 .t1_i (l_res_t1[k*(BITS-1) +: BITS-1]), .range1_i (l_res_range1[2*k +: 2]),
                 .enter1_i (l_res_enter1[k]),
                 .inside_i (l_res_inside[k]), .last_i (l_res_side[k*SIDE_W + SIDE_W-1]), .payload_i (1'b0),
+                .cpos_i (cpos),
+                .info_valid_i (inf_valid), .info_ready_o (inf_ready), .info_secondary_i (inf_secondary),
+                .info_flags_i (inf_flags), .info_tlimit_i (inf_tlimit),
+                .info_lb_count_i (inf_run[0 +: LBC]),
+                .info_lb_slot_i (inf_run[LBC +: LOOK_BEHIND*TREE_HEIGHT]),
+                .info_lb_entering_i (inf_run[LBC + LOOK_BEHIND*TREE_HEIGHT +: LOOK_BEHIND]),
+                .info_lb_same_t_i (inf_run[LBC + LOOK_BEHIND*(TREE_HEIGHT+1) +: LOOK_BEHIND]),
                 .valid_o (w_valid[k]), .ready_i (w_ready[k]), .hit_o (w_hit[k]), .t_o (w_t[k*(BITS-1) +: BITS-1]),
                 .leaf_o (w_leaf[k*LEAF_BITS +: LEAF_BITS]), .slot_o (w_slot), .entering_o (w_entering[k]),
-                .from_o (w_from[8*k +: 8]), .to_o (w_to[8*k +: 8]), .flags_before_o (w_flags_before),
-                .payload_o (w_payload)
+                .from_o (w_from[8*k +: 8]), .to_o (w_to[8*k +: 8]), .flags_before_o (w_near[k*SLOTS +: SLOTS]),
+                .payload_o (w_payload), .flags_after_o (w_after[k*SLOTS +: SLOTS]),
+                .lb_count_o (w_run[k*RUN_W +: LBC]),
+                .lb_slot_o (w_run[k*RUN_W + LBC +: LOOK_BEHIND*TREE_HEIGHT]),
+                .lb_entering_o (w_run[k*RUN_W + LBC + LOOK_BEHIND*TREE_HEIGHT +: LOOK_BEHIND]),
+                .lb_same_t_o (w_run[k*RUN_W + LBC + LOOK_BEHIND*(TREE_HEIGHT+1) +: LOOK_BEHIND])
             );
 
-            // Not used yet: the coefficients along the ray (debug), the hit's
-            // tree slot, near-side flags and payload (secondary rays, later).
-            wire unused_lane = &{1'b0, res_a, res_b, res_c, w_slot, w_flags_before, w_payload};
+            // Not used: the coefficients along the ray (debug) but c's sign,
+            // the hit's tree slot and the payload.
+            wire unused_lane = &{1'b0, res_a, res_b, w_slot, w_payload};
         end
     endgenerate
 
@@ -215,6 +283,9 @@ module csgrt_top #(
     wire [LEAF_BITS-1:0] hit_leaf /*verilator public_flat_rd*/ = w_leaf[merge_lane*LEAF_BITS +: LEAF_BITS];
     wire [7:0]           hit_from /*verilator public_flat_rd*/ = w_from[merge_lane*8 +: 8];
     wire [7:0]           hit_to   /*verilator public_flat_rd*/ = w_to[merge_lane*8 +: 8];
+    wire [SLOTS-1:0]     hit_near  = w_near[merge_lane*SLOTS +: SLOTS];
+    wire [SLOTS-1:0]     hit_after = w_after[merge_lane*SLOTS +: SLOTS];
+    wire [RUN_W-1:0]     hit_run   = w_run[merge_lane*RUN_W +: RUN_W];
     assign w_ready = hit_ready ? ({{(U-1){1'b0}}, 1'b1} << merge_lane) : {U{1'b0}};
 
     always @(posedge clk_i) begin
@@ -232,9 +303,11 @@ module csgrt_top #(
     reg [BITS-2:0]     l_t_q;
     reg [RAY_W-1:0]    l_ray_q;
     reg [LEAF_BITS-1:0] l_leaf_q;
-    reg [7:0]          l_mat_q;
-    wire               shade_ready;
-    wire               l_advance = !l_valid_q || shade_ready;
+    reg [7:0]          l_mat_q, l_to_q;
+    reg [SLOTS-1:0]    l_near_q, l_after_q;
+    reg [RUN_W-1:0]    l_run_q;
+    wire               l_ready;       // the next stage takes the record
+    wire               l_advance = !l_valid_q || l_ready;
     wire [7:0]         shown_mat = (hit_to != 8'd0) ? hit_to : hit_from;
 
     assign hit_ready   = l_advance && queue_valid;
@@ -252,26 +325,136 @@ module csgrt_top #(
             l_ray_q   <= queue_ray;
             l_leaf_q  <= hit_leaf;
             l_mat_q   <= shown_mat;
+            l_to_q    <= hit_to;
+            l_near_q  <= hit_near;
+            l_after_q <= hit_after;
+            l_run_q   <= hit_run;
         end
     end
 
     // -------------------------------------------------------------- shading
     wire [7:0] pix_r, pix_g, pix_b;
-    csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE)) u_shade (
-        .clk_i, .rst_ni,
-        .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
-        .light_color_i (light_col), .background_i (background),
-        .s_valid_i (l_valid_q), .s_ready_o (shade_ready),
-        .s_x_i (l_ray_q[RAY_W-1 -: 12]), .s_y_i (l_ray_q[RAY_W-13 -: 12]),
-        .s_hit_i (l_hit_q), .s_t_i (l_t_q),
-        .s_o_i (l_ray_q[6*BITS-1:3*BITS]), .s_d_i (l_ray_q[3*BITS-1:0]),
-        .s_coef_i (leaf_b_coef),
-        .s_rgb_i (mat[47:0]), .s_ambient_i (mat[63:48]), .s_diffuse_i (mat[79:64]),
-        .s_phong_i (mat[95:80]), .s_phong_size_i (mat[121:112]),
-        .m_valid_o (pix_valid_o), .m_ready_i (pix_ready_i),
-        .m_x_o (pix_x_o), .m_y_o (pix_y_o), .m_r_o (pix_r), .m_g_o (pix_g), .m_b_o (pix_b)
-    );
-    assign pix_rgb_o = {pix_r, pix_g, pix_b};
+    generate
+        if (!EFFECTS) begin : g_local
+            // primary rays with local shading: the camera feeds the dispatcher
+            assign d_valid   = cam_valid;
+            assign cam_ready = d_ready;
+            assign d_ray     = {cam_x, cam_y, cam_o, cam_d};
+            assign d_last    = cam_last;
+            assign d_info    = {INFO_P{1'b0}};
+
+            wire unused_eff = ^{hit_entering, l_to_q, l_near_q, l_after_q, l_run_q, mat[MAT_W-1:96], max_trace};
+            csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE)) u_shade (
+                .clk_i, .rst_ni,
+                .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
+                .light_color_i (light_col), .background_i (background),
+                .s_valid_i (l_valid_q), .s_ready_o (l_ready),
+                .s_x_i (l_ray_q[RAY_W-1 -: 12]), .s_y_i (l_ray_q[RAY_W-13 -: 12]),
+                .s_hit_i (l_hit_q), .s_t_i (l_t_q),
+                .s_o_i (l_ray_q[6*BITS-1:3*BITS]), .s_d_i (l_ray_q[3*BITS-1:0]),
+                .s_coef_i (leaf_b_coef),
+                .s_rgb_i (mat[47:0]), .s_ambient_i (mat[63:48]), .s_diffuse_i (mat[79:64]),
+                .s_phong_i (mat[95:80]), .s_phong_size_i (mat[121:112]),
+                .m_valid_o (pix_valid_o), .m_ready_i (pix_ready_i),
+                .m_x_o (pix_x_o), .m_y_o (pix_y_o), .m_r_o (pix_r), .m_g_o (pix_g), .m_b_o (pix_b),
+                /* verilator lint_off PINCONNECTEMPTY */
+                .m_local_o (), .m_spec_o (), .lc_tag_o (), .lc_k_o (),
+                /* verilator lint_on PINCONNECTEMPTY */
+                .lc_color_i (48'd0)
+            );
+            assign pix_rgb_o = {pix_r, pix_g, pix_b};
+        end else begin : g_raytree
+            // the ray tree: secondary rays, shading after the shadow rays
+            wire [REC_W-1:0]  rt_rec;
+            wire [3*BITS-1:0] rt_o, rt_d;
+            assign d_ray  = {rt_rec, rt_o, rt_d};
+            assign d_last = 1'b0;   // one lane: every group is full
+
+            wire                   sp_valid, sp_ready, sp_reflect;
+            wire [3*BITS-1:0]      sp_o, sp_d;
+            wire [BITS-2:0]        sp_t;
+            wire [10*BITS-1:0]     sp_coef;
+            wire [MAX_LIGHTS-1:0]  sp_lights;
+            wire [CB-1:0]          sp_user;
+            wire                   ch_valid, ch_ready, ch_lit, ch_last, ch_in_range;
+            wire [2:0]             ch_kind;
+            wire [KW-1:0]          ch_light;
+            wire [3*BITS-1:0]      ch_p, ch_d;
+            wire [DIST_W-1:0]      ch_dist;
+            wire [CB-1:0]          ch_user;
+            wire                   sh_valid, sh_ready;
+            wire [11:0]            sh_tag;
+            wire [3*BITS-1:0]      sh_o, sh_d;
+            wire [BITS-2:0]        sh_t;
+            wire [10*BITS-1:0]     sh_coef;
+            wire [MAT_W-1:0]       sh_mat;
+            wire [11:0]            lc_tag;
+            wire [$clog2(MAX_LIGHTS+1)-1:0] lc_k;
+            wire [47:0]            lc_color;
+            wire                   sr_valid, sr_ready;
+            wire [11:0]            sr_tag, sr_y;
+            wire [3*31-1:0]        sr_local;
+            wire [3*26-1:0]        sr_spec;
+
+            csgrt_raytree #(
+                .BITS(BITS), .TREE_HEIGHT(TREE_HEIGHT), .MAX_LIGHTS(MAX_LIGHTS), .CONTEXTS(CONTEXTS),
+                .MAX_DEPTH(MAX_DEPTH), .LOOK_BEHIND(LOOK_BEHIND), .SHADOWS(SHADOWS), .REFLECTION(REFLECTION),
+                .DIST_W(DIST_W), .MAT_W(MAT_W), .COL_W(31), .SPEC_W(26), .LUT_FILE(LUT_FILE)
+            ) u_raytree (
+                .clk_i, .rst_ni, .start_i (start),
+                .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_color_i (light_col),
+                .background_i (background), .max_trace_i (max_trace),
+                .cam_valid_i (cam_valid), .cam_ready_o (cam_ready), .cam_x_i (cam_x), .cam_y_i (cam_y),
+                .cam_o_i (cam_o), .cam_d_i (cam_d),
+                .ray_valid_o (d_valid), .ray_ready_i (d_ready), .ray_rec_o (rt_rec), .ray_o_o (rt_o),
+                .ray_d_o (rt_d), .ray_info_o (d_info),
+                .tr_valid_i (l_valid_q), .tr_ready_o (l_ready), .tr_rec_i (l_ray_q[RAY_W-1 -: REC_W]),
+                .tr_o_i (l_ray_q[6*BITS-1:3*BITS]), .tr_d_i (l_ray_q[3*BITS-1:0]),
+                .tr_hit_i (l_hit_q), .tr_t_i (l_t_q), .tr_to_i (l_to_q), .tr_coef_i (leaf_b_coef),
+                .tr_mat_i (mat), .tr_flags_near_i (l_near_q), .tr_run_i (l_run_q), .tr_flags_after_i (l_after_q),
+                .sp_valid_o (sp_valid), .sp_ready_i (sp_ready), .sp_o_o (sp_o), .sp_d_o (sp_d), .sp_t_o (sp_t),
+                .sp_coef_o (sp_coef), .sp_lights_o (sp_lights), .sp_reflect_o (sp_reflect), .sp_user_o (sp_user),
+                .ch_valid_i (ch_valid), .ch_ready_o (ch_ready), .ch_kind_i (ch_kind), .ch_light_i (ch_light),
+                .ch_p_i (ch_p), .ch_d_i (ch_d), .ch_dist_i (ch_dist), .ch_lit_i (ch_lit), .ch_last_i (ch_last),
+                .ch_user_i (ch_user),
+                .sh_valid_o (sh_valid), .sh_ready_i (sh_ready), .sh_tag_o (sh_tag), .sh_o_o (sh_o), .sh_d_o (sh_d),
+                .sh_t_o (sh_t), .sh_coef_o (sh_coef), .sh_mat_o (sh_mat),
+                .lc_tag_i (lc_tag), .lc_k_i (lc_k), .lc_color_o (lc_color),
+                .sr_valid_i (sr_valid), .sr_ready_o (sr_ready), .sr_tag_i (sr_tag), .sr_local_i (sr_local),
+                .sr_spec_i (sr_spec),
+                .pix_valid_o (pix_valid_o), .pix_ready_i (pix_ready_i), .pix_x_o (pix_x_o), .pix_y_o (pix_y_o),
+                .pix_rgb_o (pix_rgb_o)
+            );
+
+            csgrt_spawn #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .USER_WIDTH(CB)) u_spawn (
+                .clk_i, .rst_ni, .light_pos_i (light_pos),
+                .s_valid_i (sp_valid), .s_ready_o (sp_ready), .s_o_i (sp_o), .s_d_i (sp_d), .s_t_i (sp_t),
+                .s_coef_i (sp_coef), .s_ior_from_i (16'd4096), .s_ior_to_i (16'd4096), .s_lights_i (sp_lights),
+                .s_reflect_i (sp_reflect), .s_refract_i (1'b0), .s_continue_i (1'b0), .s_user_i (sp_user),
+                .m_valid_o (ch_valid), .m_ready_i (ch_ready), .m_kind_o (ch_kind), .m_light_o (ch_light),
+                .m_o_o (ch_p), .m_in_range_o (ch_in_range), .m_d_o (ch_d), .m_dist_o (ch_dist), .m_lit_o (ch_lit),
+                .m_last_o (ch_last), .m_user_o (ch_user)
+            );
+            wire unused_ch = ^{ch_in_range, sr_y, hit_entering, l_mat_q, cam_last};
+
+            csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE),
+                          .LINEAR_OUT(1), .EXT_LIGHT(1)) u_shade (
+                .clk_i, .rst_ni,
+                .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
+                .light_color_i (light_col), .background_i (background),
+                .s_valid_i (sh_valid), .s_ready_o (sh_ready),
+                .s_x_i (sh_tag), .s_y_i (12'd0), .s_hit_i (1'b1), .s_t_i (sh_t),
+                .s_o_i (sh_o), .s_d_i (sh_d), .s_coef_i (sh_coef),
+                .s_rgb_i (sh_mat[47:0]), .s_ambient_i (sh_mat[63:48]), .s_diffuse_i (sh_mat[79:64]),
+                .s_phong_i (sh_mat[95:80]), .s_phong_size_i (sh_mat[121:112]),
+                .m_valid_o (sr_valid), .m_ready_i (sr_ready),
+                .m_x_o (sr_tag), .m_y_o (sr_y), .m_r_o (pix_r), .m_g_o (pix_g), .m_b_o (pix_b),
+                .m_local_o (sr_local), .m_spec_o (sr_spec), .lc_tag_o (lc_tag), .lc_k_o (lc_k),
+                .lc_color_i (lc_color)
+            );
+            wire unused_pix = ^{pix_r, pix_g, pix_b, sh_mat[MAT_W-1:122], sh_mat[111:96]};
+        end
+    endgenerate
 
     // ---------------------------------------------------- frame and statistics
     reg [63:0] pairs_now;   // pairs handed to the lanes in this clock
@@ -305,9 +488,8 @@ module csgrt_top #(
         end
     end
 
-    // Signals this configuration does not use yet: the camera's own frame
-    // flags (the frame ends at the last pixel), the hit's entering flag and
-    // the material's reflection field (effects, later).
-    wire unused_ok = &{1'b0, cam_busy, cam_done, hit_entering, mat[111:96], num_lights};
+    // Not used: the camera's own frame flags (the frame ends at the last
+    // pixel) and the light count's high bits beyond MAX_LIGHTS.
+    wire unused_ok = &{1'b0, cam_busy, cam_done, num_lights};
 endmodule
 `default_nettype wire

@@ -11,13 +11,34 @@
 // event_sort (leaf -> fill bank 2 clocks, handover 1) plus the walker
 // (load 1, one event per clock, TREE_HEIGHT tree stages, output skid 1).
 // Both sides valid/ready; ready_o and valid_o are registers' functions.
+//
+// Secondary rays (SECONDARY = 1; SECONDARY = 0 builds none of it, ties
+// info_ready_o and the new outputs to 0 and ignores the new inputs; same
+// latency and throughput either way). Matches trace_secondary_fx() too:
+//   cpos_i             per leaf result: c > 0 (csgrt_isect's c_o > 0)
+//   info_*             one record per ray (primary or secondary), read with
+//                      every leaf of the ray: it must be valid when the
+//                      ray's first leaf is accepted (ready_o is low while
+//                      info_valid_i is low) and is popped with the ray's
+//                      last leaf (info_ready_o = valid_i && ready_o &&
+//                      last_i). info_secondary_i, the inherited flags, the
+//                      t limit and the parent's look-behind run: see
+//                      csgrt_event_sort.
+//   flags_after_o, lb_*_o  beside each hit record (valid with valid_o):
+//                      the flags just after the hit crossing and the
+//                      look-behind run, see csgrt_walker. With flags_before_o
+//                      they form the info record of the hit's children:
+//                      near side (shadow, reflected) {flags_before_o, lb_*_o},
+//                      far side {flags_after_o, lb_count 0}.
 module csgrt_walk_unit #(
     parameter BITS          = 24,   // coordinate width B; t is B-1 bits
     parameter MAX_LEAVES    = 64,   // leaves per ray
     parameter LEAF_BITS     = 6,    // leaf index width (2^LEAF_BITS >= MAX_LEAVES)
     parameter TREE_HEIGHT   = 8,    // 2^TREE_HEIGHT classification slots
     parameter MAT_BITS      = 8,    // material index width
-    parameter PAYLOAD_WIDTH = 1     // per-ray sideband (>= 1)
+    parameter PAYLOAD_WIDTH = 1,    // per-ray sideband (>= 1)
+    parameter SECONDARY     = 0,    // 1: secondary rays (info stream, run, flags after)
+    parameter LOOK_BEHIND   = 4     // look-behind entries (kLookBehind), >= 1
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,           // synchronous, active low
@@ -41,6 +62,17 @@ module csgrt_walk_unit #(
     input  wire                     inside_i,
     input  wire                     last_i,
     input  wire [PAYLOAD_WIDTH-1:0] payload_i,
+    input  wire                     cpos_i,           // c > 0 (SECONDARY)
+    // per-ray info (SECONDARY; csgrt_event_sort)
+    input  wire                     info_valid_i,
+    output wire                     info_ready_o,
+    input  wire                     info_secondary_i,
+    input  wire [(1<<TREE_HEIGHT)-1:0]          info_flags_i,
+    input  wire [BITS-3:0]                      info_tlimit_i,
+    input  wire [$clog2(LOOK_BEHIND+1)-1:0]     info_lb_count_i,
+    input  wire [LOOK_BEHIND*TREE_HEIGHT-1:0]   info_lb_slot_i,
+    input  wire [LOOK_BEHIND-1:0]               info_lb_entering_i,
+    input  wire [LOOK_BEHIND-1:0]               info_lb_same_t_i,
     // hit records
     output wire                     valid_o,
     input  wire                     ready_i,
@@ -52,7 +84,13 @@ module csgrt_walk_unit #(
     output wire [MAT_BITS-1:0]      from_o,
     output wire [MAT_BITS-1:0]      to_o,
     output wire [(1<<TREE_HEIGHT)-1:0] flags_before_o,
-    output wire [PAYLOAD_WIDTH-1:0] payload_o
+    output wire [PAYLOAD_WIDTH-1:0] payload_o,
+    // beside the hit record (SECONDARY; csgrt_walker)
+    output wire [(1<<TREE_HEIGHT)-1:0]          flags_after_o,
+    output wire [$clog2(LOOK_BEHIND+1)-1:0]     lb_count_o,
+    output wire [LOOK_BEHIND*TREE_HEIGHT-1:0]   lb_slot_o,
+    output wire [LOOK_BEHIND-1:0]               lb_entering_o,
+    output wire [LOOK_BEHIND-1:0]               lb_same_t_o
 );
 
     localparam NS = 1 << TREE_HEIGHT;
@@ -66,20 +104,26 @@ module csgrt_walk_unit #(
 
     csgrt_event_sort #(
         .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS),
-        .TREE_HEIGHT(TREE_HEIGHT), .PAYLOAD_WIDTH(PAYLOAD_WIDTH)
+        .TREE_HEIGHT(TREE_HEIGHT), .PAYLOAD_WIDTH(PAYLOAD_WIDTH),
+        .SECONDARY(SECONDARY), .LOOK_BEHIND(LOOK_BEHIND)
     ) u_sort (
         .clk_i(clk_i), .rst_ni(rst_ni), .ties_regular_i(ties_regular_i),
         .valid_i(valid_i), .ready_o(ready_o), .slot_i(slot_i), .leaf_i(leaf_i), .count_i(count_i),
         .t0_i(t0_i), .range0_i(range0_i), .enter0_i(enter0_i),
         .t1_i(t1_i), .range1_i(range1_i), .enter1_i(enter1_i),
-        .inside_i(inside_i), .last_i(last_i), .payload_i(payload_i),
+        .inside_i(inside_i), .last_i(last_i), .payload_i(payload_i), .cpos_i(cpos_i),
+        .info_valid_i(info_valid_i), .info_ready_o(info_ready_o), .info_secondary_i(info_secondary_i),
+        .info_flags_i(info_flags_i), .info_tlimit_i(info_tlimit_i), .info_lb_count_i(info_lb_count_i),
+        .info_lb_slot_i(info_lb_slot_i), .info_lb_entering_i(info_lb_entering_i),
+        .info_lb_same_t_i(info_lb_same_t_i),
         .ray_valid_o(ray_valid), .ray_flags_o(ray_flags), .ray_payload_o(ray_payload), .ray_done_i(ray_done),
         .ev_valid_o(ev_valid), .ev_last_o(ev_last), .ev_t_o(ev_t), .ev_leaf_o(ev_leaf), .ev_slot_o(ev_slot),
         .ev_entering_o(ev_entering), .ev_pop_i(ev_pop));
 
     csgrt_walker #(
         .BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
-        .MAT_BITS(MAT_BITS), .PAYLOAD_WIDTH(PAYLOAD_WIDTH)
+        .MAT_BITS(MAT_BITS), .PAYLOAD_WIDTH(PAYLOAD_WIDTH),
+        .SECONDARY(SECONDARY), .LOOK_BEHIND(LOOK_BEHIND)
     ) u_walk (
         .clk_i(clk_i), .rst_ni(rst_ni),
         .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
@@ -88,7 +132,8 @@ module csgrt_walk_unit #(
         .ev_entering_i(ev_entering), .ev_pop_o(ev_pop),
         .valid_o(valid_o), .ready_i(ready_i), .hit_o(hit_o), .t_o(t_o), .leaf_o(leaf_o), .slot_o(slot_o),
         .entering_o(entering_o), .from_o(from_o), .to_o(to_o), .flags_before_o(flags_before_o),
-        .payload_o(payload_o));
+        .payload_o(payload_o), .flags_after_o(flags_after_o), .lb_count_o(lb_count_o), .lb_slot_o(lb_slot_o),
+        .lb_entering_o(lb_entering_o), .lb_same_t_o(lb_same_t_o));
 
 endmodule
 

@@ -23,10 +23,36 @@
 // issued after it (still in flight: a shadow of the tree's pipeline) undone.
 // On a miss every field but payload_o is zero.
 //
+// Secondary rays (SECONDARY = 1; with SECONDARY = 0 these outputs are 0 and
+// their logic is not built), beside each hit record (on a miss all 0):
+//   flags_after_o  the flags just after the hit crossing: flags_before_o
+//                  with the hit's slot toggled (the far side, for a
+//                  continuation or transmitted ray: TraceResult::flags_after
+//                  without look-ahead).
+//                  TODO: the refraction look-ahead (TraceOptions::lookahead,
+//                  docs/effects.md: behind a transparent hit, cross the
+//                  following coincident surfaces too; the hit then reads
+//                  BORDER a1,an) is not implemented; flags_after_o and
+//                  from_o/to_o ignore it until it is.
+//   lb_count_o     0..LOOK_BEHIND: the look-behind run, the valid (non-skip)
+//   lb_slot_o      tokens of the ray issued before the hit token, most
+//   lb_entering_o  recent first (TraceResult::near_run): entry k's slot at
+//   lb_same_t_o    [k*TREE_HEIGHT +: TREE_HEIGHT], its entering and
+//                  "t equals the hit's t" at bit k; entries at and past
+//                  lb_count_o are 0. Each token carries in its tag the run
+//                  as it stood when the token was issued (a history of the
+//                  ray's last LOOK_BEHIND valid tokens, cleared when a ray
+//                  is loaded), so tokens issued after the hit (still in the
+//                  tree, undone for flags_before_o) are not part of it.
+// flags_before_o, lb_*_o and the hit's position make the info record of
+// the near-side children (shadow, reflected) for csgrt_event_sort, which
+// applies the look-behind fix-up; flags_after_o that of far-side ones.
+//
 // Latency: a ray loaded at edge k issues its i-th event (i = 0, 1, ..) at
 // edge k+1+i (into the tree's first register); the tree's result is there
 // after edge k+i+TREE_HEIGHT and the record on valid_o (csgrt_skid) after
-// edge k+i+TREE_HEIGHT+1. Throughput: one event per clock; per ray
+// edge k+i+TREE_HEIGHT+1 (the same with SECONDARY = 1). Throughput: one
+// event per clock; per ray
 // max(1, issued events) + 2 clocks with event_sort (release -> next ray
 // loaded), issued events = all of them on a miss, at most
 // hit index + TREE_HEIGHT + 1 on a hit.
@@ -38,7 +64,9 @@ module csgrt_walker #(
     parameter LEAF_BITS     = 6,    // leaf index width
     parameter TREE_HEIGHT   = 8,    // H: 2^H slots
     parameter MAT_BITS      = 8,    // material index width
-    parameter PAYLOAD_WIDTH = 1     // per-ray sideband (>= 1)
+    parameter PAYLOAD_WIDTH = 1,    // per-ray sideband (>= 1)
+    parameter SECONDARY     = 0,    // 1: flags_after_o and the look-behind run
+    parameter LOOK_BEHIND   = 4     // look-behind entries (kLookBehind), >= 1
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,   // synchronous, active low
@@ -69,7 +97,13 @@ module csgrt_walker #(
     output wire [MAT_BITS-1:0]      from_o,
     output wire [MAT_BITS-1:0]      to_o,
     output wire [(1<<TREE_HEIGHT)-1:0] flags_before_o,
-    output wire [PAYLOAD_WIDTH-1:0] payload_o
+    output wire [PAYLOAD_WIDTH-1:0] payload_o,
+    // beside the hit record (SECONDARY)
+    output wire [(1<<TREE_HEIGHT)-1:0]          flags_after_o,
+    output wire [$clog2(LOOK_BEHIND+1)-1:0]     lb_count_o,
+    output wire [LOOK_BEHIND*TREE_HEIGHT-1:0]   lb_slot_o,
+    output wire [LOOK_BEHIND-1:0]               lb_entering_o,
+    output wire [LOOK_BEHIND-1:0]               lb_same_t_o
 );
 
     localparam TW = BITS - 1;
@@ -78,9 +112,16 @@ module csgrt_walker #(
     localparam NS = 1 << H;
     localparam MB = MAT_BITS;
     localparam CW = 2 * MB + 2;
-    // token tag: {seq, skip, last, t, leaf, slot, entering}
-    localparam GW = 3 + TW + LB + H + 1;
-    localparam OW = 1 + TW + LB + H + 1 + 2 * MB + NS + PAYLOAD_WIDTH;
+    localparam LBK = LOOK_BEHIND;
+    localparam CB  = $clog2(LOOK_BEHIND + 1);
+    // the look-behind run {count, slots, entering, same_t} (SECONDARY)
+    localparam RW  = (SECONDARY != 0) ? CB + LBK * (H + 2) : 0;
+    // token tag: {run (SECONDARY), seq, skip, last, t, leaf, slot, entering}
+    localparam BGW = 3 + TW + LB + H + 1;
+    localparam GW  = BGW + RW;
+    // record: {run (SECONDARY), hit, t, leaf, slot, entering, from, to, flags_before, payload}
+    localparam BOW = 1 + TW + LB + H + 1 + 2 * MB + NS + PAYLOAD_WIDTH;
+    localparam OW  = BOW + RW;
 
     reg                     act_q;           // a ray is being issued
     reg                     seq_q;           // its bank
@@ -95,9 +136,9 @@ module csgrt_walker #(
     wire          tv;
     wire [CW-1:0] tc;
     wire [GW-1:0] tg;
-    wire          t_seq  = tg[GW-1];
-    wire          t_skip = tg[GW-2];
-    wire          t_last = tg[GW-3];
+    wire          t_seq  = tg[BGW-1];
+    wire          t_skip = tg[BGW-2];
+    wire          t_last = tg[BGW-3];
     wire [TW-1:0] t_t    = tg[LB+H+1 +: TW];
     wire [LB-1:0] t_leaf = tg[H+1 +: LB];
     wire [H-1:0]  t_slot = tg[1 +: H];
@@ -122,7 +163,8 @@ module csgrt_walker #(
     assign ev_pop_o   = issue && ev_valid_i;
     assign ray_done_o = ce && act_q && (stop || last);
 
-    wire [GW-1:0] tag_in = {seq_q, skip, last, ev_t_i, ev_leaf_i, ev_slot_i, ev_entering_i};
+    wire [BGW-1:0] tag_base = {seq_q, skip, last, ev_t_i, ev_leaf_i, ev_slot_i, ev_entering_i};
+    wire [GW-1:0]  tag_in;
 
     csgrt_class_tree #(.TREE_HEIGHT(H), .MAT_BITS(MB), .TAG_WIDTH(GW)) u_tree (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce),
@@ -185,20 +227,70 @@ module csgrt_walker #(
     end
 
     // ---- output ----------------------------------------------------------------
-    wire [OW-1:0] rec = res_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_before,
-                                   t_seq ? pl1_q : pl0_q}
-                                : {{(OW-PAYLOAD_WIDTH){1'b0}}, t_seq ? pl1_q : pl0_q};
-    wire [OW-1:0] rec_o;
+    wire [BOW-1:0] rec_base = res_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_before,
+                                         t_seq ? pl1_q : pl0_q}
+                                      : {{(BOW-PAYLOAD_WIDTH){1'b0}}, t_seq ? pl1_q : pl0_q};
+    wire [OW-1:0]  rec;
+    wire [OW-1:0]  rec_o;
     csgrt_skid #(.WIDTH(OW)) u_out (
         .clk_i(clk_i), .rst_ni(rst_ni),
         .valid_i(res), .ready_o(sk_ready), .data_i(rec),
         .valid_o(valid_o), .ready_i(ready_i), .data_o(rec_o));
-    assign {hit_o, t_o, leaf_o, slot_o, entering_o, from_o, to_o, flags_before_o, payload_o} = rec_o;
+    assign {hit_o, t_o, leaf_o, slot_o, entering_o, from_o, to_o, flags_before_o, payload_o} = rec_o[BOW-1:0];
+
+    // ---- secondary rays: the look-behind run, flags after the hit ----------
+    genvar g;
+    generate
+        if (SECONDARY != 0) begin : g_sec
+            // the ray's last LBK valid tokens, most recent at entry 0
+            reg [CB-1:0]     hc_q;             // entries held, 0 .. LBK
+            reg [LBK*H-1:0]  hs_q;
+            reg [LBK-1:0]    he_q;
+            reg [LBK*TW-1:0] ht_q;
+            // the run of the token being issued: the history, same_t against its t
+            wire [LBK*H-1:0] run_slot;
+            wire [LBK-1:0]   run_ent, run_same;
+            for (g = 0; g < LBK; g = g + 1) begin : g_run
+                wire held = {{(32-CB){1'b0}}, hc_q} > g;
+                assign run_slot[g*H +: H] = held ? hs_q[g*H +: H] : {H{1'b0}};
+                assign run_ent[g]         = held && he_q[g];
+                assign run_same[g]        = held && ht_q[g*TW +: TW] == ev_t_i;
+            end
+            assign tag_in = {hc_q, run_slot, run_ent, run_same, tag_base};
+            integer i;
+            always @(posedge clk_i) begin
+                if (ce && issue && !skip) begin
+                    for (i = LBK - 1; i > 0; i = i - 1) begin
+                        hs_q[i*H +: H]   <= hs_q[(i-1)*H +: H];
+                        he_q[i]          <= he_q[i-1];
+                        ht_q[i*TW +: TW] <= ht_q[(i-1)*TW +: TW];
+                    end
+                    hs_q[0 +: H]  <= ev_slot_i;
+                    he_q[0]       <= ev_entering_i;
+                    ht_q[0 +: TW] <= ev_t_i;
+                    if ({{(32-CB){1'b0}}, hc_q} != LBK) hc_q <= hc_q + 1'b1;
+                end
+                if ((ce && load) || !rst_ni) hc_q <= {CB{1'b0}};
+            end
+            // the hit token's run (misses: 0) rides in the record
+            assign rec = {res_hit ? tg[GW-1:BGW] : {RW{1'b0}}, rec_base};
+            assign {lb_count_o, lb_slot_o, lb_entering_o, lb_same_t_o} = rec_o[OW-1:BOW];
+            assign flags_after_o = flags_before_o ^ ({{(NS-1){1'b0}}, hit_o} << slot_o);
+        end else begin : g_pri
+            assign tag_in        = tag_base;
+            assign rec           = rec_base;
+            assign flags_after_o = {NS{1'b0}};
+            assign lb_count_o    = {CB{1'b0}};
+            assign lb_slot_o     = {(LBK*H){1'b0}};
+            assign lb_entering_o = {LBK{1'b0}};
+            assign lb_same_t_o   = {LBK{1'b0}};
+        end
+    endgenerate
 
     generate
-        if (H < 2) begin : g_bad_param
+        if (H < 2 || LOOK_BEHIND < 1) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_walker needs TREE_HEIGHT >= 2");
+                $display("ERROR %m: csgrt_walker needs TREE_HEIGHT >= 2 and LOOK_BEHIND >= 1");
                 $finish;
             end
         end

@@ -14,12 +14,16 @@ namespace csgrt_sim {
 
 inline const char* range_name(int r) { return r == 0 ? "-inf" : r == 2 ? "+inf" : ""; }
 
+// model_rgb < 0: the model's colour of the primary ray alone (builds
+// without effects); else the model's colour with the build's effects (the
+// ray details below are the primary ray's).
 inline std::string mismatch_report(const csgrt::CompiledScene& cs, csgrt::TiePolicy ties, int x, int y,
-                                   uint32_t rtl_rgb, const RayLog* rtl) {
+                                   uint32_t rtl_rgb, const RayLog* rtl, int64_t model_with_effects = -1) {
     using namespace csgrt;
     std::ostringstream s;
     const PixelTrace pt = render_pixel_fx(cs, x, y, ties, true);
-    const uint32_t model_rgb = uint32_t(pt.rgb[0]) << 16 | uint32_t(pt.rgb[1]) << 8 | pt.rgb[2];
+    const uint32_t model_rgb = model_with_effects >= 0 ? uint32_t(model_with_effects)
+                                                       : uint32_t(pt.rgb[0]) << 16 | uint32_t(pt.rgb[1]) << 8 | pt.rgb[2];
     char buf[256];
     std::snprintf(buf, sizeof buf, "first mismatch at pixel (%d,%d): RTL rgb %06x, model rgb %06x\n", x, y, rtl_rgb,
                   model_rgb);
@@ -37,7 +41,8 @@ inline std::string mismatch_report(const csgrt::CompiledScene& cs, csgrt::TiePol
           << pt.trace.border.str();
     s << "\n";
     if (!rtl) {
-        s << "  (no RTL log kept for this ray)\n";
+        s << "  (no RTL log kept for this ray" << (model_with_effects >= 0 ? ": secondary rays interleave" : "")
+          << ")\n";
         return s.str();
     }
     s << "  RTL intersection results (leaf: count, events, inside at -inf):\n";

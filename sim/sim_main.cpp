@@ -18,7 +18,22 @@
 using namespace csgrt;
 using Clock = std::chrono::steady_clock;
 
+// The effect units this binary was built with (csgrt_top's SHADOWS,
+// REFLECTION; the Makefile passes them).
+#ifndef CSGRT_SHADOWS
+#define CSGRT_SHADOWS 0
+#endif
+#ifndef CSGRT_REFLECTION
+#define CSGRT_REFLECTION 0
+#endif
+
 namespace {
+
+constexpr bool kEffects = CSGRT_SHADOWS || CSGRT_REFLECTION;
+const char* kBuildUnits = CSGRT_SHADOWS && CSGRT_REFLECTION ? "shadows and reflection units"
+                          : CSGRT_SHADOWS                   ? "a shadow unit"
+                          : CSGRT_REFLECTION                ? "a reflection unit"
+                                                            : "no effect units";
 
 const char* kUsage =
     "usage: csgrt_sim --scene-image SCENE.bin --out OUT.png [--ties paper|regular] [--trace OUT.fst]\n"
@@ -66,11 +81,13 @@ int main(int argc, char** argv) {
         return 1;
     }
     const int W = cs.width, H = cs.height;
-    std::printf("scene effects: %s; this RTL implements: %s\n", scene_effects(cs).str().c_str(),
-                rtl_effects(cs).str().c_str());
+    const EffectSet rtl_fx = rtl_effects(cs, CSGRT_SHADOWS, CSGRT_REFLECTION);
+    std::printf("scene effects: %s; this build has %s; it renders: %s\n", scene_effects(cs).str().c_str(),
+                kBuildUnits, rtl_fx.str().c_str());
 
     csgrt_sim::TopSim<Vcsgrt_top> sim(cs.fmt.bits, CSGRT_LEAF_BITS, CSGRT_TREE_HEIGHT, CSGRT_NUM_UNITS, trace_path);
     sim.reset();
+    sim.set_logging(!kEffects);   // the per-ray log follows primary rays only
     const int err = sim.load(words);
     if (err) {
         static const char* what[] = {"", "bad magic or version", "BITS differs from this build's BITS",
@@ -91,7 +108,7 @@ int main(int argc, char** argv) {
         RenderOptions ro;
         ro.ties = ties;
         ro.threads = 1;
-        ro.effects = rtl_effects(cs);   // the effects this RTL implements
+        ro.effects = rtl_fx;   // the effects this RTL build renders
         model = render(cs, ro);
         model_s = seconds_since(m0);
     }
@@ -116,7 +133,8 @@ int main(int argc, char** argv) {
             if (m == c)
                 ++matched;
             else if (first_mismatch.empty())
-                first_mismatch = csgrt_sim::mismatch_report(cs, ties, x, y, c, sim.log_for(i));
+                first_mismatch = kEffects ? csgrt_sim::mismatch_report(cs, ties, x, y, c, nullptr, m)
+                                          : csgrt_sim::mismatch_report(cs, ties, x, y, c, sim.log_for(i));
         },
         [&](int row) {
             if (row % 4 == 3 || row == H - 1)
@@ -135,8 +153,9 @@ int main(int argc, char** argv) {
     const double npix = double(W) * H;
     std::printf("cycles per frame        %llu\n", (unsigned long long)st.cycles);
     std::printf("cycles per pixel        %.2f\n", st.cycles / npix);
-    std::printf("pairs issued            %llu (%zu leaves x %d pixels)\n", (unsigned long long)st.pairs,
-                cs.leaves.size(), W * H);
+    const double rays = cs.leaves.empty() ? 0.0 : double(st.pairs) / double(cs.leaves.size());
+    std::printf("pairs issued            %llu (%zu leaves x %.0f rays, %.2f rays per pixel)\n",
+                (unsigned long long)st.pairs, cs.leaves.size(), rays, rays / npix);
     const double bound = double(st.pairs) / CSGRT_NUM_UNITS;   // cycles if every unit took a pair every clock
     std::printf("intersection units      %d\n", CSGRT_NUM_UNITS);
     std::printf("intersection-unit utilisation  %.3f pairs/cycle per unit (bound pairs/units = %.0f cycles, frame at %.3fx)\n",

@@ -13,7 +13,7 @@ BUILD        ?= build
 VERILATOR    ?= verilator
 YOSYS        ?= yosys
 TB_NAMES     := sqrt div isect camera shade
-TB_NAMES     += class_node class_tree walk
+TB_NAMES     += class_node class_tree walk spawn
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_COMMON    := $(wildcard tb/common/*.h)
@@ -36,6 +36,9 @@ TB_LIB_camera := $(TB_LIB_isect)
 TB_DEP_camera := $(TB_DEP_isect)
 TB_LIB_shade  := $(TB_LIB_isect)
 TB_DEP_shade  := $(TB_DEP_isect)
+# and the secondary-ray geometry bench (csgrt_spawn)
+TB_LIB_spawn  := $(TB_LIB_isect)
+TB_DEP_spawn  := $(TB_DEP_isect)
 
 # $(1): testbench name (folder tb/$(1)/ with tb_$(1).v and tb_$(1).cpp)
 define TB_RULE

@@ -19,9 +19,17 @@
 
 using namespace csgrt;
 
+#ifndef FRAME_SHADOWS
+#define FRAME_SHADOWS 0
+#endif
+#ifndef FRAME_REFLECTION
+#define FRAME_REFLECTION 0
+#endif
+
 namespace {
 
 const int kLeafBits = 6, kTreeHeight = 8;
+constexpr bool kEffects = FRAME_SHADOWS || FRAME_REFLECTION;
 
 std::vector<uint32_t> compile_words(const Scene& s, int w, int h) {
     CompileOptions o;
@@ -45,10 +53,11 @@ FrameResult run_frame(const std::vector<uint32_t>& words, TiePolicy ties, int re
     RenderOptions ro;
     ro.ties = ties;
     ro.threads = 1;
-    ro.effects = rtl_effects(cs);   // the effects this RTL implements
+    ro.effects = rtl_effects(cs, FRAME_SHADOWS, FRAME_REFLECTION);   // the effects this build renders
     const Frame model = render(cs, ro);
     csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
     sim.reset();
+    sim.set_logging(!kEffects);
     FrameResult r;
     if (sim.load(words) != 0) {
         r.report = "the RTL refused the scene image";
@@ -67,7 +76,8 @@ FrameResult run_frame(const std::vector<uint32_t>& words, TiePolicy ties, int re
             if (m == c)
                 ++r.matched;
             else if (r.report.empty())
-                r.report = csgrt_sim::mismatch_report(cs, ties, x, y, c, sim.log_for(i));
+                r.report = kEffects ? csgrt_sim::mismatch_report(cs, ties, x, y, c, nullptr, m)
+                                    : csgrt_sim::mismatch_report(cs, ties, x, y, c, sim.log_for(i));
         },
         nullptr, r.stats, uint64_t(cs.width) * cs.height * 20000);
     return r;
@@ -77,9 +87,10 @@ void expect_pixel_exact(const std::string& name, const Scene& scene, int w, int 
                         int ready_percent = 100) {
     const FrameResult r = run_frame(compile_words(scene, w, h), ties, ready_percent);
     const size_t n = size_t(w) * h;
-    std::printf("[ frame    ] %-22s %2d bits, %d unit(s), ties %-7s: matched %zu of %zu pixels, %llu cycles, "
+    std::printf("[ frame    ] %-22s %2d bits, %d unit(s)%s, ties %-7s: matched %zu of %zu pixels, %llu cycles, "
                 "%.3f pairs/cycle/unit\n",
-                name.c_str(), FRAME_BITS, FRAME_UNITS, ties == TiePolicy::Paper ? "paper" : "regular", r.matched, n,
+                name.c_str(), FRAME_BITS, FRAME_UNITS, kEffects ? " +fx" : "",
+                ties == TiePolicy::Paper ? "paper" : "regular", r.matched, n,
                 (unsigned long long)r.stats.cycles,
                 r.stats.cycles ? double(r.stats.pairs) / r.stats.cycles / FRAME_UNITS : 0.0);
     EXPECT_TRUE(r.completed) << name << ": the frame did not complete";
@@ -139,3 +150,26 @@ TEST(Frame, RefusesAnImageForAnotherConfiguration) {
     sim.reset();
     EXPECT_EQ(sim.load(words), 2);
 }
+
+#if FRAME_SHADOWS || FRAME_REFLECTION
+// Effect builds: the ray tree (csgrt_raytree, csgrt_spawn, secondary rays in
+// the walk units) against the model's accumulate_fx, pixel for pixel.
+Scene paper_file(const std::string& name) { return parse_scene_file("scenes/paper/" + name + ".pov"); }
+
+TEST(FrameEffects, ShadowsAndReflectionOnTheEffectScenes) {
+    expect_pixel_exact("mirror", scene_file("mirror"), 40, 30, TiePolicy::Paper);
+    expect_pixel_exact("fig08 (Fig. 8)", paper_file("fig08_reflect"), 40, 30, TiePolicy::Paper);
+    expect_pixel_exact("fig08 (Fig. 8)", paper_file("fig08_reflect"), 40, 30, TiePolicy::Regular);
+}
+
+// Coincident faces cast shadows and reflect: the look-behind of the walk
+// unit and the child's fix-up in the event sorter decide these pixels.
+TEST(FrameEffects, CoincidentFacesWithShadows) {
+    expect_pixel_exact("fig06 (Fig. 6)", paper_file("fig06_add_shared"), 40, 30, TiePolicy::Paper);
+    expect_pixel_exact("fig14 (Fig. 14)", paper_file("fig14_self_add"), 40, 30, TiePolicy::Regular);
+}
+
+TEST(FrameEffects, BackPressureLosesNothing) {
+    expect_pixel_exact("mirror, 40% ready", scene_file("mirror"), 24, 18, TiePolicy::Paper, 40);
+}
+#endif

@@ -1,8 +1,14 @@
 `default_nettype none
 // tb_walk — Verilator top for tb_walk.cpp: csgrt_walk_unit (event_sort +
-// walker) at BITS 16 and 24, TREE_HEIGHT 8, MAX_LEAVES 64, one clock each;
-// mon_* observe the sorted ray between event_sort and walker (ray loads and
-// event pops) for the bench's diagnostics.
+// walker) at BITS 16 and 24, TREE_HEIGHT 8, MAX_LEAVES 64, one clock each:
+// b16, b24 with SECONDARY = 0 (as csgrt_top builds it) and s16, s24 with
+// SECONDARY = 1, LOOK_BEHIND 4 (secondary rays); mon_* observe the sorted
+// ray between event_sort and walker (ray loads and event pops) for the
+// bench's diagnostics. The configuration (ties, tree layout) is static
+// during a run (set before reset) and registered here on the instance's
+// clock: logic behind a top-level input is re-evaluated by every eval() of
+// the model, so unregistered it would make each test pay for all four
+// instances' key comparators and classification trees.
 module tb_walk (
     input  wire b16_clk_i,
     input  wire b16_rst_ni,
@@ -79,10 +85,133 @@ module tb_walk (
     output wire [22:0] b24_mon_t_o,
     output wire [5:0] b24_mon_leaf_o,
     output wire [7:0] b24_mon_slot_o,
-    output wire b24_mon_ent_o
+    output wire b24_mon_ent_o,
+    input  wire s16_clk_i,
+    input  wire s16_rst_ni,
+    input  wire s16_ties_regular_i,
+    input  wire [511:0] s16_node_op_i,
+    input  wire [2047:0] s16_slot_mat_i,
+    input  wire [255:0] s16_slot_used_i,
+    input  wire s16_valid_i,
+    output wire s16_ready_o,
+    input  wire [7:0] s16_slot_i,
+    input  wire [5:0] s16_leaf_i,
+    input  wire [1:0] s16_count_i,
+    input  wire [14:0] s16_t0_i,
+    input  wire [1:0] s16_range0_i,
+    input  wire s16_enter0_i,
+    input  wire [14:0] s16_t1_i,
+    input  wire [1:0] s16_range1_i,
+    input  wire s16_enter1_i,
+    input  wire s16_inside_i,
+    input  wire s16_last_i,
+    input  wire [31:0] s16_payload_i,
+    input  wire s16_cpos_i,
+    input  wire s16_info_valid_i,
+    output wire s16_info_ready_o,
+    input  wire s16_info_secondary_i,
+    input  wire [255:0] s16_info_flags_i,
+    input  wire [13:0] s16_info_tlimit_i,
+    input  wire [2:0] s16_info_lb_count_i,
+    input  wire [31:0] s16_info_lb_slot_i,
+    input  wire [3:0] s16_info_lb_entering_i,
+    input  wire [3:0] s16_info_lb_same_t_i,
+    output wire s16_valid_o,
+    input  wire s16_ready_i,
+    output wire s16_hit_o,
+    output wire [14:0] s16_t_o,
+    output wire [5:0] s16_leaf_o,
+    output wire [7:0] s16_slot_o,
+    output wire s16_entering_o,
+    output wire [7:0] s16_from_o,
+    output wire [7:0] s16_to_o,
+    output wire [255:0] s16_flags_before_o,
+    output wire [31:0] s16_payload_o,
+    output wire [255:0] s16_flags_after_o,
+    output wire [2:0] s16_lb_count_o,
+    output wire [31:0] s16_lb_slot_o,
+    output wire [3:0] s16_lb_entering_o,
+    output wire [3:0] s16_lb_same_t_o,
+    output wire s16_mon_load_o,
+    output wire [255:0] s16_mon_flags_o,
+    output wire s16_mon_pop_o,
+    output wire [14:0] s16_mon_t_o,
+    output wire [5:0] s16_mon_leaf_o,
+    output wire [7:0] s16_mon_slot_o,
+    output wire s16_mon_ent_o,
+    input  wire s24_clk_i,
+    input  wire s24_rst_ni,
+    input  wire s24_ties_regular_i,
+    input  wire [511:0] s24_node_op_i,
+    input  wire [2047:0] s24_slot_mat_i,
+    input  wire [255:0] s24_slot_used_i,
+    input  wire s24_valid_i,
+    output wire s24_ready_o,
+    input  wire [7:0] s24_slot_i,
+    input  wire [5:0] s24_leaf_i,
+    input  wire [1:0] s24_count_i,
+    input  wire [22:0] s24_t0_i,
+    input  wire [1:0] s24_range0_i,
+    input  wire s24_enter0_i,
+    input  wire [22:0] s24_t1_i,
+    input  wire [1:0] s24_range1_i,
+    input  wire s24_enter1_i,
+    input  wire s24_inside_i,
+    input  wire s24_last_i,
+    input  wire [31:0] s24_payload_i,
+    input  wire s24_cpos_i,
+    input  wire s24_info_valid_i,
+    output wire s24_info_ready_o,
+    input  wire s24_info_secondary_i,
+    input  wire [255:0] s24_info_flags_i,
+    input  wire [21:0] s24_info_tlimit_i,
+    input  wire [2:0] s24_info_lb_count_i,
+    input  wire [31:0] s24_info_lb_slot_i,
+    input  wire [3:0] s24_info_lb_entering_i,
+    input  wire [3:0] s24_info_lb_same_t_i,
+    output wire s24_valid_o,
+    input  wire s24_ready_i,
+    output wire s24_hit_o,
+    output wire [22:0] s24_t_o,
+    output wire [5:0] s24_leaf_o,
+    output wire [7:0] s24_slot_o,
+    output wire s24_entering_o,
+    output wire [7:0] s24_from_o,
+    output wire [7:0] s24_to_o,
+    output wire [255:0] s24_flags_before_o,
+    output wire [31:0] s24_payload_o,
+    output wire [255:0] s24_flags_after_o,
+    output wire [2:0] s24_lb_count_o,
+    output wire [31:0] s24_lb_slot_o,
+    output wire [3:0] s24_lb_entering_o,
+    output wire [3:0] s24_lb_same_t_o,
+    output wire s24_mon_load_o,
+    output wire [255:0] s24_mon_flags_o,
+    output wire s24_mon_pop_o,
+    output wire [22:0] s24_mon_t_o,
+    output wire [5:0] s24_mon_leaf_o,
+    output wire [7:0] s24_mon_slot_o,
+    output wire s24_mon_ent_o
 );
-    csgrt_walk_unit #(.BITS(16), .MAX_LEAVES(64), .LEAF_BITS(6), .TREE_HEIGHT(8), .MAT_BITS(8), .PAYLOAD_WIDTH(32)) u_b16 (
-        .clk_i(b16_clk_i), .rst_ni(b16_rst_ni), .ties_regular_i(b16_ties_regular_i), .node_op_i(b16_node_op_i), .slot_mat_i(b16_slot_mat_i), .slot_used_i(b16_slot_used_i), .valid_i(b16_valid_i), .ready_o(b16_ready_o), .slot_i(b16_slot_i), .leaf_i(b16_leaf_i), .count_i(b16_count_i), .t0_i(b16_t0_i), .range0_i(b16_range0_i), .enter0_i(b16_enter0_i), .t1_i(b16_t1_i), .range1_i(b16_range1_i), .enter1_i(b16_enter1_i), .inside_i(b16_inside_i), .last_i(b16_last_i), .payload_i(b16_payload_i), .valid_o(b16_valid_o), .ready_i(b16_ready_i), .hit_o(b16_hit_o), .t_o(b16_t_o), .leaf_o(b16_leaf_o), .slot_o(b16_slot_o), .entering_o(b16_entering_o), .from_o(b16_from_o), .to_o(b16_to_o), .flags_before_o(b16_flags_before_o), .payload_o(b16_payload_o));
+    reg         b16_ties_regular_q;
+    reg [511:0] b16_node_op_q;
+    reg [2047:0] b16_slot_mat_q;
+    reg [255:0] b16_slot_used_q;
+    always @(posedge b16_clk_i) begin
+        b16_ties_regular_q <= b16_ties_regular_i;
+        b16_node_op_q <= b16_node_op_i;
+        b16_slot_mat_q <= b16_slot_mat_i;
+        b16_slot_used_q <= b16_slot_used_i;
+    end
+    csgrt_walk_unit #(.BITS(16), .MAX_LEAVES(64), .LEAF_BITS(6), .TREE_HEIGHT(8), .MAT_BITS(8), .PAYLOAD_WIDTH(32), .SECONDARY(0), .LOOK_BEHIND(4)) u_b16 (
+        .clk_i(b16_clk_i), .rst_ni(b16_rst_ni), .ties_regular_i(b16_ties_regular_q), .node_op_i(b16_node_op_q), .slot_mat_i(b16_slot_mat_q), .slot_used_i(b16_slot_used_q), .valid_i(b16_valid_i), .ready_o(b16_ready_o), .slot_i(b16_slot_i), .leaf_i(b16_leaf_i), .count_i(b16_count_i), .t0_i(b16_t0_i), .range0_i(b16_range0_i), .enter0_i(b16_enter0_i), .t1_i(b16_t1_i), .range1_i(b16_range1_i), .enter1_i(b16_enter1_i), .inside_i(b16_inside_i), .last_i(b16_last_i), .payload_i(b16_payload_i), .valid_o(b16_valid_o), .ready_i(b16_ready_i), .hit_o(b16_hit_o), .t_o(b16_t_o), .leaf_o(b16_leaf_o), .slot_o(b16_slot_o), .entering_o(b16_entering_o), .from_o(b16_from_o), .to_o(b16_to_o), .flags_before_o(b16_flags_before_o), .payload_o(b16_payload_o),
+        // SECONDARY = 0: the secondary-ray inputs tied, their (constant 0) outputs open
+        .cpos_i(1'b0), .info_valid_i(1'b0), .info_secondary_i(1'b0), .info_flags_i(256'd0), .info_tlimit_i(14'd0),
+        .info_lb_count_i(3'd0), .info_lb_slot_i(32'd0), .info_lb_entering_i(4'd0), .info_lb_same_t_i(4'd0),
+        /* verilator lint_off PINCONNECTEMPTY */
+        .info_ready_o(), .flags_after_o(), .lb_count_o(), .lb_slot_o(), .lb_entering_o(), .lb_same_t_o()
+        /* verilator lint_on PINCONNECTEMPTY */
+    );
     assign b16_mon_load_o = u_b16.u_walk.load;
     assign b16_mon_flags_o = u_b16.u_sort.ray_flags_o;
     assign b16_mon_pop_o = u_b16.u_walk.ev_pop_o;
@@ -90,8 +219,25 @@ module tb_walk (
     assign b16_mon_leaf_o = u_b16.u_sort.ev_leaf_o;
     assign b16_mon_slot_o = u_b16.u_sort.ev_slot_o;
     assign b16_mon_ent_o = u_b16.u_sort.ev_entering_o;
-    csgrt_walk_unit #(.BITS(24), .MAX_LEAVES(64), .LEAF_BITS(6), .TREE_HEIGHT(8), .MAT_BITS(8), .PAYLOAD_WIDTH(32)) u_b24 (
-        .clk_i(b24_clk_i), .rst_ni(b24_rst_ni), .ties_regular_i(b24_ties_regular_i), .node_op_i(b24_node_op_i), .slot_mat_i(b24_slot_mat_i), .slot_used_i(b24_slot_used_i), .valid_i(b24_valid_i), .ready_o(b24_ready_o), .slot_i(b24_slot_i), .leaf_i(b24_leaf_i), .count_i(b24_count_i), .t0_i(b24_t0_i), .range0_i(b24_range0_i), .enter0_i(b24_enter0_i), .t1_i(b24_t1_i), .range1_i(b24_range1_i), .enter1_i(b24_enter1_i), .inside_i(b24_inside_i), .last_i(b24_last_i), .payload_i(b24_payload_i), .valid_o(b24_valid_o), .ready_i(b24_ready_i), .hit_o(b24_hit_o), .t_o(b24_t_o), .leaf_o(b24_leaf_o), .slot_o(b24_slot_o), .entering_o(b24_entering_o), .from_o(b24_from_o), .to_o(b24_to_o), .flags_before_o(b24_flags_before_o), .payload_o(b24_payload_o));
+    reg         b24_ties_regular_q;
+    reg [511:0] b24_node_op_q;
+    reg [2047:0] b24_slot_mat_q;
+    reg [255:0] b24_slot_used_q;
+    always @(posedge b24_clk_i) begin
+        b24_ties_regular_q <= b24_ties_regular_i;
+        b24_node_op_q <= b24_node_op_i;
+        b24_slot_mat_q <= b24_slot_mat_i;
+        b24_slot_used_q <= b24_slot_used_i;
+    end
+    csgrt_walk_unit #(.BITS(24), .MAX_LEAVES(64), .LEAF_BITS(6), .TREE_HEIGHT(8), .MAT_BITS(8), .PAYLOAD_WIDTH(32), .SECONDARY(0), .LOOK_BEHIND(4)) u_b24 (
+        .clk_i(b24_clk_i), .rst_ni(b24_rst_ni), .ties_regular_i(b24_ties_regular_q), .node_op_i(b24_node_op_q), .slot_mat_i(b24_slot_mat_q), .slot_used_i(b24_slot_used_q), .valid_i(b24_valid_i), .ready_o(b24_ready_o), .slot_i(b24_slot_i), .leaf_i(b24_leaf_i), .count_i(b24_count_i), .t0_i(b24_t0_i), .range0_i(b24_range0_i), .enter0_i(b24_enter0_i), .t1_i(b24_t1_i), .range1_i(b24_range1_i), .enter1_i(b24_enter1_i), .inside_i(b24_inside_i), .last_i(b24_last_i), .payload_i(b24_payload_i), .valid_o(b24_valid_o), .ready_i(b24_ready_i), .hit_o(b24_hit_o), .t_o(b24_t_o), .leaf_o(b24_leaf_o), .slot_o(b24_slot_o), .entering_o(b24_entering_o), .from_o(b24_from_o), .to_o(b24_to_o), .flags_before_o(b24_flags_before_o), .payload_o(b24_payload_o),
+        // SECONDARY = 0: the secondary-ray inputs tied, their (constant 0) outputs open
+        .cpos_i(1'b0), .info_valid_i(1'b0), .info_secondary_i(1'b0), .info_flags_i(256'd0), .info_tlimit_i(22'd0),
+        .info_lb_count_i(3'd0), .info_lb_slot_i(32'd0), .info_lb_entering_i(4'd0), .info_lb_same_t_i(4'd0),
+        /* verilator lint_off PINCONNECTEMPTY */
+        .info_ready_o(), .flags_after_o(), .lb_count_o(), .lb_slot_o(), .lb_entering_o(), .lb_same_t_o()
+        /* verilator lint_on PINCONNECTEMPTY */
+    );
     assign b24_mon_load_o = u_b24.u_walk.load;
     assign b24_mon_flags_o = u_b24.u_sort.ray_flags_o;
     assign b24_mon_pop_o = u_b24.u_walk.ev_pop_o;
@@ -99,5 +245,43 @@ module tb_walk (
     assign b24_mon_leaf_o = u_b24.u_sort.ev_leaf_o;
     assign b24_mon_slot_o = u_b24.u_sort.ev_slot_o;
     assign b24_mon_ent_o = u_b24.u_sort.ev_entering_o;
+    reg         s16_ties_regular_q;
+    reg [511:0] s16_node_op_q;
+    reg [2047:0] s16_slot_mat_q;
+    reg [255:0] s16_slot_used_q;
+    always @(posedge s16_clk_i) begin
+        s16_ties_regular_q <= s16_ties_regular_i;
+        s16_node_op_q <= s16_node_op_i;
+        s16_slot_mat_q <= s16_slot_mat_i;
+        s16_slot_used_q <= s16_slot_used_i;
+    end
+    csgrt_walk_unit #(.BITS(16), .MAX_LEAVES(64), .LEAF_BITS(6), .TREE_HEIGHT(8), .MAT_BITS(8), .PAYLOAD_WIDTH(32), .SECONDARY(1), .LOOK_BEHIND(4)) u_s16 (
+        .clk_i(s16_clk_i), .rst_ni(s16_rst_ni), .ties_regular_i(s16_ties_regular_q), .node_op_i(s16_node_op_q), .slot_mat_i(s16_slot_mat_q), .slot_used_i(s16_slot_used_q), .valid_i(s16_valid_i), .ready_o(s16_ready_o), .slot_i(s16_slot_i), .leaf_i(s16_leaf_i), .count_i(s16_count_i), .t0_i(s16_t0_i), .range0_i(s16_range0_i), .enter0_i(s16_enter0_i), .t1_i(s16_t1_i), .range1_i(s16_range1_i), .enter1_i(s16_enter1_i), .inside_i(s16_inside_i), .last_i(s16_last_i), .payload_i(s16_payload_i), .valid_o(s16_valid_o), .ready_i(s16_ready_i), .hit_o(s16_hit_o), .t_o(s16_t_o), .leaf_o(s16_leaf_o), .slot_o(s16_slot_o), .entering_o(s16_entering_o), .from_o(s16_from_o), .to_o(s16_to_o), .flags_before_o(s16_flags_before_o), .payload_o(s16_payload_o), .cpos_i(s16_cpos_i), .info_valid_i(s16_info_valid_i), .info_ready_o(s16_info_ready_o), .info_secondary_i(s16_info_secondary_i), .info_flags_i(s16_info_flags_i), .info_tlimit_i(s16_info_tlimit_i), .info_lb_count_i(s16_info_lb_count_i), .info_lb_slot_i(s16_info_lb_slot_i), .info_lb_entering_i(s16_info_lb_entering_i), .info_lb_same_t_i(s16_info_lb_same_t_i), .flags_after_o(s16_flags_after_o), .lb_count_o(s16_lb_count_o), .lb_slot_o(s16_lb_slot_o), .lb_entering_o(s16_lb_entering_o), .lb_same_t_o(s16_lb_same_t_o));
+    assign s16_mon_load_o = u_s16.u_walk.load;
+    assign s16_mon_flags_o = u_s16.u_sort.ray_flags_o;
+    assign s16_mon_pop_o = u_s16.u_walk.ev_pop_o;
+    assign s16_mon_t_o = u_s16.u_sort.ev_t_o;
+    assign s16_mon_leaf_o = u_s16.u_sort.ev_leaf_o;
+    assign s16_mon_slot_o = u_s16.u_sort.ev_slot_o;
+    assign s16_mon_ent_o = u_s16.u_sort.ev_entering_o;
+    reg         s24_ties_regular_q;
+    reg [511:0] s24_node_op_q;
+    reg [2047:0] s24_slot_mat_q;
+    reg [255:0] s24_slot_used_q;
+    always @(posedge s24_clk_i) begin
+        s24_ties_regular_q <= s24_ties_regular_i;
+        s24_node_op_q <= s24_node_op_i;
+        s24_slot_mat_q <= s24_slot_mat_i;
+        s24_slot_used_q <= s24_slot_used_i;
+    end
+    csgrt_walk_unit #(.BITS(24), .MAX_LEAVES(64), .LEAF_BITS(6), .TREE_HEIGHT(8), .MAT_BITS(8), .PAYLOAD_WIDTH(32), .SECONDARY(1), .LOOK_BEHIND(4)) u_s24 (
+        .clk_i(s24_clk_i), .rst_ni(s24_rst_ni), .ties_regular_i(s24_ties_regular_q), .node_op_i(s24_node_op_q), .slot_mat_i(s24_slot_mat_q), .slot_used_i(s24_slot_used_q), .valid_i(s24_valid_i), .ready_o(s24_ready_o), .slot_i(s24_slot_i), .leaf_i(s24_leaf_i), .count_i(s24_count_i), .t0_i(s24_t0_i), .range0_i(s24_range0_i), .enter0_i(s24_enter0_i), .t1_i(s24_t1_i), .range1_i(s24_range1_i), .enter1_i(s24_enter1_i), .inside_i(s24_inside_i), .last_i(s24_last_i), .payload_i(s24_payload_i), .valid_o(s24_valid_o), .ready_i(s24_ready_i), .hit_o(s24_hit_o), .t_o(s24_t_o), .leaf_o(s24_leaf_o), .slot_o(s24_slot_o), .entering_o(s24_entering_o), .from_o(s24_from_o), .to_o(s24_to_o), .flags_before_o(s24_flags_before_o), .payload_o(s24_payload_o), .cpos_i(s24_cpos_i), .info_valid_i(s24_info_valid_i), .info_ready_o(s24_info_ready_o), .info_secondary_i(s24_info_secondary_i), .info_flags_i(s24_info_flags_i), .info_tlimit_i(s24_info_tlimit_i), .info_lb_count_i(s24_info_lb_count_i), .info_lb_slot_i(s24_info_lb_slot_i), .info_lb_entering_i(s24_info_lb_entering_i), .info_lb_same_t_i(s24_info_lb_same_t_i), .flags_after_o(s24_flags_after_o), .lb_count_o(s24_lb_count_o), .lb_slot_o(s24_lb_slot_o), .lb_entering_o(s24_lb_entering_o), .lb_same_t_o(s24_lb_same_t_o));
+    assign s24_mon_load_o = u_s24.u_walk.load;
+    assign s24_mon_flags_o = u_s24.u_sort.ray_flags_o;
+    assign s24_mon_pop_o = u_s24.u_walk.ev_pop_o;
+    assign s24_mon_t_o = u_s24.u_sort.ev_t_o;
+    assign s24_mon_leaf_o = u_s24.u_sort.ev_leaf_o;
+    assign s24_mon_slot_o = u_s24.u_sort.ev_slot_o;
+    assign s24_mon_ent_o = u_s24.u_sort.ev_entering_o;
 endmodule
 `default_nettype wire

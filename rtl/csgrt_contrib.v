@@ -1,0 +1,107 @@
+`default_nettype none
+// csgrt_contrib — a shaded ray's contribution to its pixel, bit for bit
+// accumulate_fx() in model/raytree.cpp (docs/effects.md, "Colour"):
+//
+//   L       = local                                          (no transmitted child)
+//           = rnd((1 - filter) (local - spec), 12) + spec    (a transmitted child)
+//   contrib = min(rnd(w L, 12), 4095)
+//
+// local and spec are csgrt_shade's linear outputs (12 fraction bits,
+// non-negative); the pixel's sum of contributions saturates at 4095 as the
+// model's clamp of the sum does (every term is non-negative).
+//
+// Pipeline (global stall: the output skid's registered ready):
+//   C0 mul (2)  (1 - filter) (local - spec)
+//   C1 reg (1)  L
+//   C2 mul (2)  w L
+//   skid (1)
+// Latency 6 clocks, one record per clock. Multipliers: 6.
+module csgrt_contrib #(
+    parameter COL_W = 31,    // local colour bits (csgrt_shade's CLW)
+    parameter TAG_W = 3
+) (
+    input  wire               clk_i,
+    input  wire               rst_ni,
+    input  wire               s_valid_i,
+    output wire               s_ready_o,
+    input  wire [TAG_W-1:0]   s_tag_i,
+    input  wire [3*COL_W-1:0] s_local_i,
+    input  wire [3*COL_W-1:0] s_spec_i,     // spec <= local per channel
+    input  wire               s_transmits_i,
+    input  wire [15:0]        s_filter_i,   // <= 4096
+    input  wire [3*16-1:0]    s_w_i,
+    output wire               m_valid_o,
+    input  wire               m_ready_i,
+    output wire [TAG_W-1:0]   m_tag_o,
+    output wire [3*13-1:0]    m_contrib_o
+);
+    localparam DP = 16 + COL_W - 11;   // rnd((1 - f) diff)
+    localparam LW = COL_W + 1;         // L
+    localparam CP = 16 + LW - 11;      // rnd(w L)
+
+    wire en;
+    assign s_ready_o = en;
+
+    reg [3*COL_W-1:0] diff;
+    integer c;
+    always @* for (c = 0; c < 3; c = c + 1) diff[c*COL_W +: COL_W] = s_local_i[c*COL_W +: COL_W] - s_spec_i[c*COL_W +: COL_W];
+    wire [15:0] keep = 16'd4096 - s_filter_i;
+
+    // ---- C0 ----------------------------------------------------------------------
+    localparam UW0 = TAG_W + 3 * COL_W + 3 * COL_W + 1 + 48;
+    wire [3*DP-1:0] kd;
+    wire            c0_valid;
+    wire [UW0-1:0]  c0_u;
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(COL_W), .USER_WIDTH(UW0)) u_keep (
+        .clk_i, .rst_ni, .ce_i(en), .valid_i(s_valid_i), .a_i({3{keep}}), .b_i(diff),
+        .user_i({s_w_i, s_transmits_i, s_spec_i, s_local_i, s_tag_i}),
+        .valid_o(c0_valid), .p_o(kd), .user_o(c0_u));
+    wire [TAG_W-1:0]   c0_tag   = c0_u[0 +: TAG_W];
+    wire [3*COL_W-1:0] c0_local = c0_u[TAG_W +: 3*COL_W];
+    wire [3*COL_W-1:0] c0_spec  = c0_u[TAG_W + 3*COL_W +: 3*COL_W];
+    wire               c0_tr    = c0_u[TAG_W + 6*COL_W];
+    wire [47:0]        c0_w     = c0_u[TAG_W + 6*COL_W + 1 +: 48];
+
+    // ---- C1: L --------------------------------------------------------------------
+    reg              c1_valid_q;
+    reg [3*LW-1:0]   c1_l_q;
+    reg [47:0]       c1_w_q;
+    reg [TAG_W-1:0]  c1_tag_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) c1_valid_q <= 1'b0;
+        else if (en) c1_valid_q <= c0_valid;
+        if (en) begin
+            for (c = 0; c < 3; c = c + 1)
+                c1_l_q[c*LW +: LW] <= c0_tr
+                    ? kd[c*DP +: LW] + {1'b0, c0_spec[c*COL_W +: COL_W]}   // kd <= diff: fits LW
+                    : {1'b0, c0_local[c*COL_W +: COL_W]};
+            c1_w_q   <= c0_w;
+            c1_tag_q <= c0_tag;
+        end
+    end
+    wire unused_kd;
+    generate
+        genvar k;
+        wire [2:0] kd_hi;
+        for (k = 0; k < 3; k = k + 1) begin : g_kd
+            assign kd_hi[k] = ^kd[k*DP + LW +: DP - LW];
+        end
+        assign unused_kd = ^kd_hi;
+    endgenerate
+
+    // ---- C2: w L ------------------------------------------------------------------
+    wire [3*CP-1:0]  wl;
+    wire             c2_valid;
+    wire [TAG_W-1:0] c2_tag;
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(LW), .USER_WIDTH(TAG_W)) u_w (
+        .clk_i, .rst_ni, .ce_i(en), .valid_i(c1_valid_q), .a_i(c1_w_q), .b_i(c1_l_q), .user_i(c1_tag_q),
+        .valid_o(c2_valid), .p_o(wl), .user_o(c2_tag));
+    reg [38:0] contrib;
+    always @* for (c = 0; c < 3; c = c + 1)
+        contrib[c*13 +: 13] = (|wl[c*CP + 12 +: CP - 12]) ? 13'd4095 : wl[c*CP +: 13];
+
+    csgrt_skid #(.WIDTH(TAG_W + 39)) u_skid (
+        .clk_i, .rst_ni, .valid_i(c2_valid), .ready_o(en), .data_i({contrib, c2_tag}),
+        .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_contrib_o, m_tag_o}));
+endmodule
+`default_nettype wire

@@ -1,0 +1,562 @@
+`default_nettype none
+// csgrt_raytree — the ray scheduler for shadows and reflection: it traces
+// each pixel's ray tree through the intersection lanes, bit for bit
+// accumulate_fx() of model/raytree.cpp (docs/effects.md, docs/architecture.md).
+//
+// CONTEXTS pixels are in flight, one context each. A context traces its
+// pixel's tree depth first, one colour ray (primary, reflected, ...) at a
+// time; the shadow rays of a hit run in parallel. Per colour ray:
+//
+//   trace -> miss (or a hit point out of range): add rnd(w background)
+//         -> hit: ask csgrt_spawn for the hit's children (a shadow ray per
+//            light, the reflected ray); shadow rays go to the lanes, the
+//            reflected ray onto the context's stack; when every shadow ray
+//            has come back (each leaves the light's colour scaled by what
+//            got through, or 0), the hit is shaded (csgrt_shade with those
+//            light colours, csgrt_contrib) and rnd(w L) is added
+//   then the next ray from the stack, or the pixel is done.
+//
+// The sum of contributions does not depend on the order rays finish in,
+// so contexts run independently; finished pixels wait in an output buffer
+// of 2 CONTEXTS entries and leave in raster order.
+//
+// Bounded by construction (no deadlock, no overflow): a context has at
+// most one colour ray or MAX_LIGHTS shadow rays in flight, so the ray FIFO
+// (RAY_FIFO >= CONTEXTS * max(1, MAX_LIGHTS)) never refuses a ray; the
+// spawn request FIFO holds one request per context; a context's stack
+// holds at most one pending sibling per level (MAX_DEPTH >= the scene's
+// max_trace_level, which the compiler checks). Every input is taken as it
+// comes except when a ray or request has nowhere to go, which the bounds
+// rule out.
+//
+// Events, one per clock, in priority order: a contribution (shading done),
+// a spawned child, a traced ray, a stack pop, a new pixel from the camera.
+// Handshakes: valid/ready everywhere; outputs that leave the module are
+// registers or FIFO outputs.
+module csgrt_raytree #(
+    parameter BITS        = 24,
+    parameter TREE_HEIGHT = 8,
+    parameter MAX_LIGHTS  = 8,
+    parameter CONTEXTS    = 8,       // pixels in flight (a power of two)
+    parameter MAX_DEPTH   = 8,       // stack entries per context (>= max_trace_level)
+    parameter LOOK_BEHIND = 4,
+    parameter SHADOWS     = 1,
+    parameter REFLECTION  = 1,
+    parameter DIST_W      = 27,      // shadow distance width (csgrt_spawn's m_dist_o)
+    parameter MAT_W       = 154,     // material record (csgrt_scene_loader)
+    parameter COL_W       = 31,      // csgrt_shade's linear colour
+    parameter SPEC_W      = 26,
+    parameter LUT_FILE    = "rtl/srgb_lut.hex",
+    // derived
+    parameter NS          = 1 << TREE_HEIGHT,
+    parameter CB          = $clog2(CONTEXTS),
+    parameter KW          = (MAX_LIGHTS > 1) ? $clog2(MAX_LIGHTS) : 1,
+    parameter LBC         = $clog2(LOOK_BEHIND + 1),
+    parameter RUN_W       = LBC + LOOK_BEHIND * (TREE_HEIGHT + 2),   // {same_t, entering, slots, count}
+    parameter REC_W       = 1 + CB + KW + 48 + 4 + 48 + 5 + DIST_W,  // the ray record, see below
+    parameter INFO_W      = 1 + NS + (BITS - 2) + RUN_W              // event-sort info, see below
+) (
+    input  wire                      clk_i,
+    input  wire                      rst_ni,
+    input  wire                      start_i,          // a frame starts (pixel order restarts)
+    // configuration (steady during a frame)
+    input  wire [$clog2(MAX_LIGHTS+1)-1:0] num_lights_i,
+    input  wire [MAX_LIGHTS*48-1:0]  light_color_i,
+    input  wire [3*16-1:0]           background_i,
+    input  wire [7:0]                max_trace_i,      // global_settings max_trace_level
+    // primary rays from the camera, raster order
+    input  wire                      cam_valid_i,
+    output wire                      cam_ready_o,
+    input  wire [11:0]               cam_x_i,
+    input  wire [11:0]               cam_y_i,
+    input  wire [3*BITS-1:0]         cam_o_i,
+    input  wire [3*BITS-1:0]         cam_d_i,
+    // rays to the lanes (csgrt_dispatch); rec comes back with the ray's hit.
+    // rec = {tlimit, cross, atten, depth, w, light, ctx, shadow} (shadow at bit 0)
+    // info = {run, tlimit (event format, 0: none), flags, secondary} for csgrt_event_sort
+    output wire                      ray_valid_o,
+    input  wire                      ray_ready_i,
+    output wire [REC_W-1:0]          ray_rec_o,
+    output wire [3*BITS-1:0]         ray_o_o,
+    output wire [3*BITS-1:0]         ray_d_o,
+    output wire [INFO_W-1:0]         ray_info_o,
+    // traced rays, in the order they were sent
+    input  wire                      tr_valid_i,
+    output wire                      tr_ready_o,
+    input  wire [REC_W-1:0]          tr_rec_i,
+    input  wire [3*BITS-1:0]         tr_o_i,
+    input  wire [3*BITS-1:0]         tr_d_i,
+    input  wire                      tr_hit_i,
+    input  wire [BITS-2:0]           tr_t_i,
+    input  wire [7:0]                tr_to_i,
+    input  wire [10*BITS-1:0]        tr_coef_i,        // the hit leaf's quadric
+    input  wire [MAT_W-1:0]          tr_mat_i,         // the shown material's record
+    input  wire [NS-1:0]             tr_flags_near_i,  // flags just before the hit crossing
+    input  wire [RUN_W-1:0]          tr_run_i,         // the look-behind run
+    input  wire [NS-1:0]             tr_flags_after_i,
+    // spawn requests (csgrt_spawn)
+    output wire                      sp_valid_o,
+    input  wire                      sp_ready_i,
+    output wire [3*BITS-1:0]         sp_o_o,
+    output wire [3*BITS-1:0]         sp_d_o,
+    output wire [BITS-2:0]           sp_t_o,
+    output wire [10*BITS-1:0]        sp_coef_o,
+    output wire [MAX_LIGHTS-1:0]     sp_lights_o,
+    output wire                      sp_reflect_o,
+    output wire [CB-1:0]             sp_user_o,
+    // spawned children
+    input  wire                      ch_valid_i,
+    output wire                      ch_ready_o,
+    input  wire [2:0]                ch_kind_i,        // csgrt_spawn's kinds
+    input  wire [KW-1:0]             ch_light_i,
+    input  wire [3*BITS-1:0]         ch_p_i,
+    input  wire [3*BITS-1:0]         ch_d_i,
+    input  wire [DIST_W-1:0]         ch_dist_i,
+    input  wire                      ch_lit_i,
+    input  wire                      ch_last_i,
+    input  wire [CB-1:0]             ch_user_i,
+    // shading requests (csgrt_shade, LINEAR_OUT and EXT_LIGHT); tag = context
+    output wire                      sh_valid_o,
+    input  wire                      sh_ready_i,
+    output wire [11:0]               sh_tag_o,
+    output wire [3*BITS-1:0]         sh_o_o,
+    output wire [3*BITS-1:0]         sh_d_o,
+    output wire [BITS-2:0]           sh_t_o,
+    output wire [10*BITS-1:0]        sh_coef_o,
+    output wire [MAT_W-1:0]          sh_mat_o,
+    input  wire [11:0]               lc_tag_i,         // the shade unit's light colour lookup
+    input  wire [$clog2(MAX_LIGHTS+1)-1:0] lc_k_i,
+    output wire [3*16-1:0]           lc_color_o,
+    input  wire                      sr_valid_i,
+    output wire                      sr_ready_o,
+    input  wire [11:0]               sr_tag_i,
+    input  wire [3*COL_W-1:0]        sr_local_i,
+    input  wire [3*SPEC_W-1:0]       sr_spec_i,
+    // pixels, raster order
+    output wire                      pix_valid_o,
+    input  wire                      pix_ready_i,
+    output wire [11:0]               pix_x_o,
+    output wire [11:0]               pix_y_o,
+    output wire [23:0]               pix_rgb_o
+);
+    localparam B   = BITS;
+    localparam TW  = B - 1;
+    localparam UW  = B - 2;                       // t ahead of the origin (event format)
+    localparam P   = CONTEXTS;
+    localparam OB  = 2 * CONTEXTS;                // output buffer entries
+    localparam OBW = $clog2(OB);
+    localparam SPW = $clog2(MAX_DEPTH + 1);
+    localparam PW  = $clog2(MAX_LIGHTS + 1);      // shadow rays pending
+    localparam NLW = $clog2(MAX_LIGHTS + 1);
+    localparam RAY_FIFO_MIN = CONTEXTS * ((MAX_LIGHTS > 1) ? MAX_LIGHTS : 1);
+    // pushes are registered, one clock after the room they checked: twice the bound
+    localparam RAY_FIFO = 2 << $clog2(RAY_FIFO_MIN);
+    localparam [15:0] ONE = 16'd4096;
+    // csgrt_spawn's child kinds (rtl/csgrt_spawn.v)
+    // (CONTINUE 0, REFRACT 2 and TIR_REFLECT 3 are not asked for in this configuration)
+    localparam [2:0] K_SHADOW = 3'd1, K_REFLECT = 3'd4;
+    // material record fields (csgrt_scene_loader)
+    localparam M_RGB = 0, M_REFL = 96, M_FILTER = 122;
+
+    // ---- the ray record ---------------------------------------------------------------
+    function [REC_W-1:0] rec(input shadow, input [CB-1:0] ctx, input [KW-1:0] light, input [47:0] w,
+                             input [3:0] depth, input [47:0] atten, input [4:0] ncross, input [DIST_W-1:0] tlimit);
+        rec = {tlimit, ncross, atten, depth, w, light, ctx, shadow};
+    endfunction
+    // event-sort info: a limit at or beyond the range of t is no limit
+    function [INFO_W-1:0] info(input secondary, input [NS-1:0] flags, input [DIST_W-1:0] tlimit, input [RUN_W-1:0] run);
+        reg [UW-1:0] tl;
+        begin
+            tl = (|(tlimit >> UW)) ? {UW{1'b0}} : tlimit[UW-1:0];
+            info = {run, tl, flags, secondary};
+        end
+    endfunction
+
+    // ---- context state ---------------------------------------------------------------
+    reg [P-1:0]        busy_q, spawning_q, shade_q, pop_q;
+    reg [11:0]         x_q     [0:P-1];
+    reg [11:0]         y_q     [0:P-1];
+    reg [OBW:0]        seq_q   [0:P-1];
+    reg [38:0]         acc_q   [0:P-1];
+    reg [PW-1:0]       pend_q  [0:P-1];
+    reg [SPW-1:0]      sp_q    [0:P-1];
+    // the colour ray's hit, kept for its children and its shading
+    reg [47:0]         w_q     [0:P-1];
+    reg [3:0]          depth_q [0:P-1];
+    reg [47:0]         wr_q    [0:P-1];
+    reg [3*B-1:0]      ho_q    [0:P-1];
+    reg [3*B-1:0]      hd_q    [0:P-1];
+    reg [TW-1:0]       ht_q    [0:P-1];
+    reg [10*B-1:0]     hcoef_q [0:P-1];
+    reg [MAT_W-1:0]    hmat_q  [0:P-1];
+    reg [NS-1:0]       near_q  [0:P-1];
+    reg [RUN_W-1:0]    run_q   [0:P-1];
+    // the light colours for shading, scaled by the shadow rays
+    reg [47:0]         lcol_q  [0:(P << KW)-1];
+    // the stack: {run, flags, depth, w, d, o}
+    localparam SW = RUN_W + NS + 4 + 48 + 6 * B;
+    reg [SW-1:0]       stack_q [0:P*MAX_DEPTH-1];
+    // the output buffer
+    reg [OB-1:0]       ob_valid_q;
+    reg [23:0]         ob_xy_q  [0:OB-1];
+    reg [38:0]         ob_acc_q [0:OB-1];
+    reg [OBW:0]        next_seq_q, retire_q;
+    reg                o_valid_q;
+    reg  [23:0]        o_xy_q;
+    wire               o_adv    = !o_valid_q || pix_ready_i;
+    wire               out_take = ob_valid_q[retire_q[OBW-1:0]] && o_adv;
+
+    // ---- sources -------------------------------------------------------------------------
+    // traced rays through csgrt_hit_prep
+    localparam TREC_W = REC_W + 6 * B + 10 * B + MAT_W + NS + RUN_W + NS + 1 + TW;
+    wire               hp_valid;
+    wire               hp_ready;
+    wire [TREC_W-1:0]  hp_rec;
+    wire [3*B-1:0]     hp_p;
+    wire               hp_in_range;
+    wire [38:0]        hp_bg;
+    wire [47:0]        hp_w_r, hp_w_t, hp_sh_color, hp_sh_atten;
+    wire               hp_sh_ends;
+    wire [DIST_W-1:0]  hp_sh_tlimit;
+    wire               tr_shadow = tr_rec_i[0];
+    wire [KW-1:0]      tr_light  = tr_rec_i[1 + CB +: KW];
+    wire [47:0]        tr_w      = tr_rec_i[1 + CB + KW +: 48];
+    wire [47:0]        tr_atten  = tr_rec_i[1 + CB + KW + 52 +: 48];
+    wire [4:0]         tr_cross  = tr_rec_i[1 + CB + KW + 100 +: 5];
+    wire [DIST_W-1:0]  tr_tlimit = tr_rec_i[1 + CB + KW + 105 +: DIST_W];
+    csgrt_hit_prep #(.BITS(B), .MAX_LIGHTS(MAX_LIGHTS), .DIST_W(DIST_W), .REC_W(TREC_W)) u_prep (
+        .clk_i, .rst_ni, .background_i, .light_color_i,
+        .s_valid_i (tr_valid_i), .s_ready_o (tr_ready_o),
+        .s_shadow_i (tr_shadow), .s_light_i (tr_light), .s_w_i (tr_w), .s_atten_i (tr_atten),
+        .s_cross_i (tr_cross), .s_tlimit_i (tr_tlimit), .s_o_i (tr_o_i), .s_d_i (tr_d_i),
+        .s_hit_i (tr_hit_i), .s_t_i (tr_t_i), .s_to_air_i (tr_to_i == 8'd0),
+        .s_rgb_i (tr_mat_i[M_RGB +: 48]), .s_filter_i (tr_mat_i[M_FILTER +: 16]),
+        .s_reflection_i (tr_mat_i[M_REFL +: 16]),
+        .s_rec_i ({tr_t_i, tr_hit_i, tr_flags_after_i, tr_run_i, tr_flags_near_i, tr_mat_i, tr_coef_i, tr_o_i, tr_d_i, tr_rec_i}),
+        .m_valid_o (hp_valid), .m_ready_i (hp_ready), .m_rec_o (hp_rec),
+        .m_p_o (hp_p), .m_in_range_o (hp_in_range), .m_bg_o (hp_bg), .m_w_r_o (hp_w_r), .m_w_t_o (hp_w_t),
+        .m_sh_ends_o (hp_sh_ends), .m_sh_color_o (hp_sh_color), .m_sh_atten_o (hp_sh_atten),
+        .m_sh_tlimit_o (hp_sh_tlimit));
+    wire [REC_W-1:0]  h_rec    = hp_rec[0 +: REC_W];
+    wire [3*B-1:0]    h_d      = hp_rec[REC_W +: 3*B];
+    wire [3*B-1:0]    h_o      = hp_rec[REC_W + 3*B +: 3*B];
+    wire [10*B-1:0]   h_coef   = hp_rec[REC_W + 6*B +: 10*B];
+    wire [MAT_W-1:0]  h_mat    = hp_rec[REC_W + 16*B +: MAT_W];
+    wire [NS-1:0]     h_near   = hp_rec[REC_W + 16*B + MAT_W +: NS];
+    wire [RUN_W-1:0]  h_run    = hp_rec[REC_W + 16*B + MAT_W + NS +: RUN_W];
+    wire [NS-1:0]     h_after  = hp_rec[REC_W + 16*B + MAT_W + NS + RUN_W +: NS];
+    wire              h_hit    = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W];
+    wire [TW-1:0]     h_t      = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 +: TW];
+    wire              h_shadow = h_rec[0];
+    wire [CB-1:0]     h_ctx    = h_rec[1 +: CB];
+    wire [KW-1:0]     h_light  = h_rec[1 + CB +: KW];
+    wire [47:0]       h_w      = h_rec[1 + CB + KW +: 48];
+    wire [3:0]        h_depth  = h_rec[1 + CB + KW + 48 +: 4];
+    wire [4:0]        h_cross  = h_rec[1 + CB + KW + 100 +: 5];
+    wire unused_hp = ^{hp_w_t, h_rec[REC_W-1 -: DIST_W], h_rec[1 + CB + KW + 52 +: 48]};
+
+    // contributions of shaded rays
+    wire              ct_valid;
+    wire              ct_ready;
+    wire [CB-1:0]     ct_ctx;
+    wire [38:0]       ct_contrib;
+    wire [CB-1:0]     sr_ctx = sr_tag_i[CB-1:0];
+    wire unused_sr_tag = ^sr_tag_i[11:CB];
+    reg  [3*COL_W-1:0] sr_spec_x;
+    integer c;
+    always @* for (c = 0; c < 3; c = c + 1)
+        sr_spec_x[c*COL_W +: COL_W] = {{(COL_W-SPEC_W){1'b0}}, sr_spec_i[c*SPEC_W +: SPEC_W]};
+    csgrt_contrib #(.COL_W(COL_W), .TAG_W(CB)) u_contrib (
+        .clk_i, .rst_ni, .s_valid_i (sr_valid_i), .s_ready_o (sr_ready_o), .s_tag_i (sr_ctx),
+        .s_local_i (sr_local_i), .s_spec_i (sr_spec_x), .s_transmits_i (1'b0),
+        .s_filter_i (hmat_q[sr_ctx][M_FILTER +: 16]), .s_w_i (w_q[sr_ctx]),
+        .m_valid_o (ct_valid), .m_ready_i (ct_ready), .m_tag_o (ct_ctx), .m_contrib_o (ct_contrib));
+
+    // ---- the ray FIFO and the spawn request FIFO ------------------------------------------
+    reg                 rq_push;
+    reg  [REC_W-1:0]    rq_rec;
+    reg  [3*B-1:0]      rq_o, rq_d;
+    reg  [INFO_W-1:0]   rq_info;
+    wire                rq_room;
+    csgrt_fifo #(.WIDTH(REC_W + 6 * B + INFO_W), .DEPTH(RAY_FIFO)) u_rays (
+        .clk_i, .rst_ni, .valid_i (rq_push), .ready_o (rq_room), .data_i ({rq_info, rq_d, rq_o, rq_rec}),
+        .valid_o (ray_valid_o), .ready_i (ray_ready_i), .data_o ({ray_info_o, ray_d_o, ray_o_o, ray_rec_o}));
+
+    // spawn requests: {ctx, reflect, lights, coef, t, d, o} of the colour ray's hit
+    localparam SPQ_W = 3 * B + 3 * B + TW + 10 * B + MAX_LIGHTS + 1 + CB;
+    reg                 spq_push;
+    reg  [SPQ_W-1:0]    spq_data;
+    wire                spq_room;
+    csgrt_fifo #(.WIDTH(SPQ_W), .DEPTH(2 * P)) u_spawn_q (
+        .clk_i, .rst_ni, .valid_i (spq_push), .ready_o (spq_room),
+        .data_i (spq_data),
+        .valid_o (sp_valid_o), .ready_i (sp_ready_i),
+        .data_o ({sp_user_o, sp_reflect_o, sp_lights_o, sp_coef_o, sp_t_o, sp_d_o, sp_o_o}));
+
+    // ---- event selection ----------------------------------------------------------------
+    // a free context and room in the output buffer for a new pixel
+    reg  [CB-1:0] free_ctx;
+    reg           free_any;
+    reg  [CB-1:0] pop_ctx;
+    reg           pop_any;
+    integer k;
+    always @* begin
+        free_ctx = {CB{1'b0}};
+        free_any = 1'b0;
+        pop_ctx  = {CB{1'b0}};
+        pop_any  = 1'b0;
+        for (k = P - 1; k >= 0; k = k - 1) begin
+            if (!busy_q[k]) begin free_ctx = k[CB-1:0]; free_any = 1'b1; end
+            if (pop_q[k])   begin pop_ctx  = k[CB-1:0]; pop_any  = 1'b1; end
+        end
+    end
+    wire [OBW:0] in_flight = next_seq_q - retire_q;
+    wire room_out = (in_flight < OB[OBW:0]);
+
+    // One event per clock; every event may push one ray, and the bounds
+    // above guarantee rq_room, which is still checked.
+    wire ev_ct  = ct_valid && rq_room;
+    wire ev_ch  = !ev_ct && ch_valid_i && rq_room;
+    wire ev_hp  = !ev_ct && !ev_ch && hp_valid && rq_room && spq_room;
+    wire ev_pop = !ev_ct && !ev_ch && !ev_hp && pop_any && rq_room;
+    wire ev_cam = !ev_ct && !ev_ch && !ev_hp && !ev_pop && cam_valid_i && free_any && room_out && rq_room
+                  && !start_i;
+    assign ct_ready    = ev_ct;
+    assign ch_ready_o  = ev_ch;
+    assign hp_ready    = ev_hp;
+    assign cam_ready_o = ev_cam;
+
+    // saturating colour sum
+    function [38:0] add_sat(input [38:0] a, input [38:0] b);
+        reg [13:0] s;
+        integer ch;
+        begin
+            for (ch = 0; ch < 3; ch = ch + 1) begin
+                s = {1'b0, a[ch*13 +: 13]} + {1'b0, b[ch*13 +: 13]};
+                add_sat[ch*13 +: 13] = (s > 14'd4095) ? 13'd4095 : s[12:0];
+            end
+        end
+    endfunction
+
+    // ---- the shading issue ---------------------------------------------------------------
+    reg  [CB-1:0] sh_ctx_q;
+    reg           sh_valid_q;
+    reg  [CB-1:0] shq_ctx;
+    reg           shq_any;
+    always @* begin
+        shq_ctx = {CB{1'b0}};
+        shq_any = 1'b0;
+        for (k = P - 1; k >= 0; k = k - 1)
+            if (shade_q[k]) begin shq_ctx = k[CB-1:0]; shq_any = 1'b1; end
+    end
+    wire sh_issue = shq_any && (!sh_valid_q || sh_ready_i);
+    assign sh_valid_o = sh_valid_q;
+    assign sh_tag_o   = {{(12-CB){1'b0}}, sh_ctx_q};
+    assign sh_o_o     = ho_q[sh_ctx_q];
+    assign sh_d_o     = hd_q[sh_ctx_q];
+    assign sh_t_o     = ht_q[sh_ctx_q];
+    assign sh_coef_o  = hcoef_q[sh_ctx_q];
+    assign sh_mat_o   = hmat_q[sh_ctx_q];
+    wire [CB-1:0] lc_ctx = lc_tag_i[CB-1:0];
+    wire unused_lc = ^lc_tag_i[11:CB];
+    wire [KW-1:0] lc_k = lc_k_i[KW-1:0];
+    generate
+        if (SHADOWS != 0) begin : g_lc_shadows
+            assign lc_color_o = lcol_q[{lc_ctx, lc_k}];
+        end else begin : g_lc_plain
+            assign lc_color_o = light_color_i[lc_k * 48 +: 48];
+            wire unused_lcx = ^{lc_ctx, lcol_q[0]};   // written for unlit lights only: unused
+        end
+        if (NLW > KW) begin : g_lc_hi
+            wire unused_lk = ^lc_k_i[NLW-1:KW];
+        end
+    endgenerate
+
+    // ---- the hit's decisions ---------------------------------------------------------------
+    wire [7:0]  next_depth = {4'd0, h_depth} + 8'd1;
+    wire        deeper     = ({4'd0, h_depth} < max_trace_i);
+    wire        want_refl  = (REFLECTION != 0) && deeper && (h_mat[M_REFL +: 16] != 16'd0);
+    wire [MAX_LIGHTS-1:0] light_mask;
+    genvar g;
+    generate
+        for (g = 0; g < MAX_LIGHTS; g = g + 1) begin : g_mask
+            assign light_mask[g] = (SHADOWS != 0) && (g < num_lights_i);
+        end
+    endgenerate
+    wire        h_colour_hit = h_hit && hp_in_range;
+    wire        want_spawn   = want_refl || (light_mask != {MAX_LIGHTS{1'b0}});
+
+    // ---- state updates ---------------------------------------------------------------------
+    // entry idx of a context's stack
+    localparam STK_AW = $clog2(P * MAX_DEPTH);
+    function [STK_AW-1:0] stk(input [CB-1:0] ctx, input [SPW-1:0] idx);
+        stk = STK_AW'(ctx) * STK_AW'(MAX_DEPTH) + STK_AW'(idx);
+    endfunction
+    wire [SW-1:0] pop_entry = stack_q[stk(pop_ctx, sp_q[pop_ctx] - 1'b1)];
+
+    wire [38:0] acc_ct = add_sat(acc_q[ct_ctx], ct_contrib);
+    wire [38:0] acc_hp = add_sat(acc_q[h_ctx], hp_bg);
+    always @(posedge clk_i) begin
+        rq_push  <= 1'b0;
+        spq_push <= 1'b0;
+        if (!rst_ni) begin
+            busy_q     <= {P{1'b0}};
+            spawning_q <= {P{1'b0}};
+            shade_q    <= {P{1'b0}};
+            pop_q      <= {P{1'b0}};
+            ob_valid_q <= {OB{1'b0}};
+            next_seq_q <= {(OBW+1){1'b0}};
+            sh_valid_q <= 1'b0;
+        end else begin
+            if (start_i) next_seq_q <= retire_q;
+            // shading issue
+            if (sh_ready_i && sh_valid_q) sh_valid_q <= 1'b0;
+            if (sh_issue) begin
+                sh_valid_q        <= 1'b1;
+                sh_ctx_q          <= shq_ctx;
+                shade_q[shq_ctx]  <= 1'b0;
+            end
+
+            if (ev_ct) begin
+                // ---- a shaded colour ray's contribution; the ray is done
+                acc_q[ct_ctx] <= acc_ct;
+                if (sp_q[ct_ctx] != {SPW{1'b0}}) pop_q[ct_ctx] <= 1'b1;
+                else begin
+                    busy_q[ct_ctx] <= 1'b0;
+                    ob_valid_q[seq_q[ct_ctx][OBW-1:0]] <= 1'b1;
+                    ob_acc_q[seq_q[ct_ctx][OBW-1:0]]   <= acc_ct;
+                    ob_xy_q[seq_q[ct_ctx][OBW-1:0]]    <= {y_q[ct_ctx], x_q[ct_ctx]};
+                end
+            end else if (ev_ch) begin
+                // ---- a child of a hit
+                case (ch_kind_i)
+                    K_SHADOW: begin
+                        if (ch_lit_i) begin
+                            rq_push <= 1'b1;
+                            rq_rec  <= rec(1'b1, ch_user_i, ch_light_i, 48'd0, 4'd0, {3{ONE}}, 5'd0, ch_dist_i);
+                            rq_o    <= ch_p_i;
+                            rq_d    <= ch_d_i;
+                            rq_info <= info(1'b1, near_q[ch_user_i], ch_dist_i, run_q[ch_user_i]);
+                            pend_q[ch_user_i] <= pend_q[ch_user_i] + 1'b1;
+                        end else begin
+                            lcol_q[{ch_user_i, ch_light_i}] <= 48'd0;
+                        end
+                    end
+                    K_REFLECT: begin
+                        stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
+                            {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wr_q[ch_user_i], ch_d_i, ch_p_i};
+                        sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
+                    end
+                    default: ;   // refraction: not in this configuration
+                endcase
+                if (ch_last_i) begin
+                    spawning_q[ch_user_i] <= 1'b0;
+                    if (pend_q[ch_user_i] == {PW{1'b0}} && !(ch_kind_i == K_SHADOW && ch_lit_i))
+                        shade_q[ch_user_i] <= 1'b1;
+                end
+            end else if (ev_hp) begin
+                if (!h_shadow) begin
+                    // ---- a colour ray came back
+                    if (!h_colour_hit) begin
+                        acc_q[h_ctx] <= acc_hp;
+                        if (sp_q[h_ctx] != {SPW{1'b0}}) pop_q[h_ctx] <= 1'b1;
+                        else begin
+                            busy_q[h_ctx] <= 1'b0;
+                            ob_valid_q[seq_q[h_ctx][OBW-1:0]] <= 1'b1;
+                            ob_acc_q[seq_q[h_ctx][OBW-1:0]]   <= acc_hp;
+                            ob_xy_q[seq_q[h_ctx][OBW-1:0]]    <= {y_q[h_ctx], x_q[h_ctx]};
+                        end
+                    end else begin
+                        w_q[h_ctx]     <= h_w;
+                        depth_q[h_ctx] <= h_depth;
+                        wr_q[h_ctx]    <= hp_w_r;
+                        ho_q[h_ctx]    <= h_o;
+                        hd_q[h_ctx]    <= h_d;
+                        ht_q[h_ctx]    <= h_t;
+                        hcoef_q[h_ctx] <= h_coef;
+                        hmat_q[h_ctx]  <= h_mat;
+                        near_q[h_ctx]  <= h_near;
+                        run_q[h_ctx]   <= h_run;
+                        pend_q[h_ctx]  <= {PW{1'b0}};
+                        if (want_spawn) begin
+                            spq_push <= 1'b1;
+                            spq_data <= {h_ctx, want_refl, light_mask, h_coef, h_t, h_d, h_o};
+                            spawning_q[h_ctx] <= 1'b1;
+                        end else begin
+                            shade_q[h_ctx] <= 1'b1;
+                        end
+                    end
+                end else begin
+                    // ---- a shadow ray came back
+                    if (hp_sh_ends) begin
+                        lcol_q[{h_ctx, h_light}] <= hp_sh_color;
+                        pend_q[h_ctx] <= pend_q[h_ctx] - 1'b1;
+                        if (pend_q[h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[h_ctx])
+                            shade_q[h_ctx] <= 1'b1;
+                    end else begin
+                        rq_push <= 1'b1;
+                        rq_rec  <= rec(1'b1, h_ctx, h_light, 48'd0, 4'd0, hp_sh_atten, h_cross + 5'd1, hp_sh_tlimit);
+                        rq_o    <= hp_p;
+                        rq_d    <= h_d;
+                        rq_info <= info(1'b1, h_after, hp_sh_tlimit, {RUN_W{1'b0}});
+                    end
+                end
+            end else if (ev_pop) begin
+                // ---- the next colour ray of a context, from its stack
+                rq_push <= 1'b1;
+                rq_rec  <= rec(1'b0, pop_ctx, {KW{1'b0}}, pop_entry[6*B +: 48], pop_entry[6*B + 48 +: 4],
+                               48'd0, 5'd0, {DIST_W{1'b0}});
+                rq_o    <= pop_entry[0 +: 3*B];
+                rq_d    <= pop_entry[3*B +: 3*B];
+                rq_info <= info(1'b1, pop_entry[6*B + 52 +: NS], {DIST_W{1'b0}}, pop_entry[6*B + 52 + NS +: RUN_W]);
+                sp_q[pop_ctx]  <= sp_q[pop_ctx] - 1'b1;
+                pop_q[pop_ctx] <= 1'b0;
+            end else if (ev_cam) begin
+                // ---- a new pixel
+                busy_q[free_ctx] <= 1'b1;
+                x_q[free_ctx]    <= cam_x_i;
+                y_q[free_ctx]    <= cam_y_i;
+                seq_q[free_ctx]  <= next_seq_q;
+                acc_q[free_ctx]  <= 39'd0;
+                sp_q[free_ctx]   <= {SPW{1'b0}};
+                next_seq_q       <= next_seq_q + 1'b1;
+                rq_push <= 1'b1;
+                rq_rec  <= rec(1'b0, free_ctx, {KW{1'b0}}, {3{ONE}}, 4'd1, 48'd0, 5'd0, {DIST_W{1'b0}});
+                rq_o    <= cam_o_i;
+                rq_d    <= cam_d_i;
+                rq_info <= info(1'b0, {NS{1'b0}}, {DIST_W{1'b0}}, {RUN_W{1'b0}});
+            end
+            // output buffer retire
+            if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
+        end
+    end
+    wire unused_next_depth = ^next_depth;
+
+    // ---- pixels out, in raster order --------------------------------------------------------
+    wire [38:0] ob_head  = ob_acc_q[retire_q[OBW-1:0]];
+    wire [23:0] code;
+    generate
+        for (g = 0; g < 3; g = g + 1) begin : g_srgb
+            csgrt_srgb #(.LUT_FILE(LUT_FILE)) u_lut (
+                .clk_i, .ce_i (o_adv), .idx_i (ob_head[g*13 +: 12]), .code_o (code[g*8 +: 8]));
+            wire unused_top = ob_head[g*13 + 12];   // saturated at 4095: bit 12 is 0
+        end
+    endgenerate
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            o_valid_q <= 1'b0;
+            retire_q  <= {(OBW+1){1'b0}};
+        end else if (o_adv) begin
+            o_valid_q <= out_take;
+            if (out_take) begin
+                o_xy_q   <= ob_xy_q[retire_q[OBW-1:0]];
+                retire_q <= retire_q + 1'b1;
+            end
+        end
+    end
+    assign pix_valid_o = o_valid_q;
+    assign pix_x_o     = o_xy_q[11:0];
+    assign pix_y_o     = o_xy_q[23:12];
+    assign pix_rgb_o   = {code[7:0], code[15:8], code[23:16]};
+endmodule
+`default_nettype wire

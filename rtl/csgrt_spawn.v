@@ -1,0 +1,868 @@
+`default_nettype none
+// csgrt_spawn — the geometry of secondary rays, bit for bit the model's
+// functions (model/raytree.cpp, model/trace.cpp, model/render.cpp;
+// docs/effects.md): for one hit, its hit point and its child rays, one child
+// per output transaction.
+//
+// ---- Interface ---------------------------------------------------------------
+// B = BITS (12..32), F = B-3 fraction bits of points, directions and t,
+// FC = B-1 of quadric coefficients (model/fixed.h, struct Formats).
+// Input, one transaction per hit (s_valid_i/s_ready_o):
+//   s_o_i, s_d_i   3 x B signed, F frac, x low: the ray's origin and unit direction
+//   s_t_i          F+2 = B-1 bits signed, F frac: the walker's t (>= 0)
+//   s_coef_i       10 x B signed, FC frac: the hit leaf's quadric, CoefIndex
+//                  order (model/compile.h) as csgrt_isect takes it (q unused)
+//   s_ior_from_i, s_ior_to_i   16 bits unsigned, 12 frac (kColorFrac; air =
+//                  1 << 12): ior_of(border.from), ior_of(border.to)
+//   s_lights_i     light k wants a shadow ray
+//   s_refract_i, s_reflect_i   a transmitted / a reflected child
+//   s_continue_i   a shadow ray crossing a transparent surface goes on from
+//                  the hit point in the same direction (shadow_fx)
+//   s_user_i       sideband, returned with every child
+// A request with no child (no flag set) must not be sent; if one is, it is
+// consumed and produces nothing.
+// Static: light_pos_i, light k axis i at (3k+i)*B (csgrt_top's light_pos,
+// F frac), read when the hit's shadow children are issued.
+// Output, one transaction per child (m_valid_o/m_ready_i), per hit in the
+// order: continue, shadow rays for each requested light k ascending, refract
+// (or its total-internal-reflection fallback), reflect; m_last_o marks the
+// hit's last child. Per child:
+//   m_kind_o       KIND_* below
+//   m_light_o      SHADOW: the light k; else 0
+//   m_o_o          p = hit_point_fx: p_i = o_i + rnd(t d_i, F), 3 x B, F frac
+//                  (the low B bits of p when out of range)
+//   m_in_range_o   hit_point_fx's return: every p_i in [-4, 4). When 0 the hit
+//                  counts as no hit (trace_colour_fx returns the background):
+//                  the children still come out, but their m_d_o, m_dist_o and
+//                  m_lit_o are meaningless
+//   m_d_o          3 x B, F frac: CONTINUE the ray's d unchanged; SHADOW
+//                  shadow_ray_fx's direction unit_fx(light - p, F, F+8);
+//                  REFRACT refract_fx's direction; TIR_REFLECT and REFLECT
+//                  reflect_fx(d, n, F). |m_d_o_i| < 2^F.
+//   m_dist_o       SHADOW: shadow_ray_fx's distance isqrt(|light - p|^2), the
+//                  t limit of the shadow ray (events at t >= it are not
+//                  reached); B+1 = F+4 bits unsigned, F frac: |light_i - p_i|
+//                  < 8 (both in [-4, 4)), so the distance is < 8 sqrt(3) < 14
+//                  < 2^4. 0 for the other kinds.
+//   m_lit_o        SHADOW: n . (light - p) > 0, exact sign (trace_colour_fx),
+//                  with n = normal_fx(p, d). A light with m_lit_o = 0 gets no
+//                  shadow ray: the consumer treats it as dark. 0 for the other kinds.
+//   m_user_o       the hit's s_user_i
+//
+// ---- Arithmetic (every rounding; rnd(x, k) = (x + 2^(k-1)) >> k, ties up) ----
+//   p_i   = o_i + rnd(t d_i, F)                          hit_point_fx (trace.cpp)
+//   g_i   = rnd(sum_j A_ij p_j + (P_i << F), FC)         half_gradient_fx (trace.cpp), |g| < 16
+//   n     = unit(g): isqrt(sum g^2, F+8) + 1, div(g_i << F, L, F+1)
+//                                                        unit_fx (render.cpp), normal_fx
+//   n     = -n if n . d > 0 (exact sign)                 face_against (trace.cpp)
+//   dn    = rnd(d . n, F)                                dot_round (render.cpp)
+//   eta   = div(ior_from << F, ior_to, F+7) (0 when it overflows), cos = -dn,
+//   sin2  = 1 - rnd(cos^2, F), k = 1 - rnd(rnd(eta^2, F) sin2, F); k < 0: TIR,
+//   sk    = isqrt(k << F), a = rnd(eta cos, F) - sk,
+//   t_i   = rnd(eta d_i, F) + rnd(a n_i, F), unit(t)     refract_fx (raytree.cpp)
+//   r_i   = d_i - rnd(2 dn n_i, F) (= rnd(dn n_i, F-1)), unit(r)   reflect_fx (raytree.cpp)
+//   lv    = light - p, unit(lv), distance isqrt(|lv|^2)  shadow_ray_fx (raytree.cpp)
+//   lit   = n . lv > 0 (exact)                           trace_colour_fx (raytree.cpp)
+// unit() is csgrt_unit (FRAC F, F+8 square-root stages, |v_i| < 128 as the
+// model requires: it throws otherwise). Widths: p B+1 bits before the range
+// check, g B+2, n F+1, dn/cos/sin2 F+2, eta F+8 (F+7 magnitude bits), eta^2
+// rounded F+15, k F+16, a F+8, lv B+1, r B+1, t F+9 summed and F+8 into the
+// unit. Every product is exact (csgrt_mul), every sum exact at its width.
+//
+// ---- Structure ---------------------------------------------------------------
+// Front (per hit, free running: it never stalls; a hit is admitted at most
+// every third clock, and only while fewer than CTX = 32 hits sit between the
+// input and the child sequencer, so no queue below can overflow):
+//   H    (3)        the hit held for three clocks; phase j feeds axis j
+//   T    (2)        t d_j                      1 multiplier, shared by the 3 axes
+//   P    (1)        p_j = o_j + rnd(t d_j, F), range check
+//   G    (2)        A_ij p_j (column j)        3 multipliers, shared by the 3 columns
+//   ACC  (1)        g_i accumulated column by column (+ P_i << F, + rounding)
+//   U1   (2F+15)    n = unit(g)                csgrt_unit #1, 3 multipliers
+//   ND   (3+2+1)    n_j d_j, phase by phase    1 multiplier; accumulate n . d
+//   NDA  (1)        face: flip n, d.n when n . d > 0
+//   NDB  (1)        dn = rnd(d.n, F), cos = -dn
+//   S1   (2)        cos^2, eta cos             2 multipliers
+//   S2   (1)        sin2, rnd(eta cos, F)
+//   S3   (2)        eta2 sin2                  1 multiplier
+//   S4   (1)        k, TIR, k << F
+//   S5   (F+1)      sk = isqrt(k << F)         csgrt_sqrt_core
+//   S6   (0)        a = rnd(eta cos, F) - sk   into the last queue
+//   eta, beside H..S1: div(ior_from << F, ior_to) (csgrt_div_core, F+8),
+//   eta^2 (1 multiplier, 2), rnd (0) into queues.
+// Per-hit values wait in small queues (csgrt_fifo, LUT RAM) instead of
+// riding along the pipelines: {d, flags, user}, {d} (for ND), {p, in_range},
+// {eta, eta2}, {eta}, {n, dn}, {rnd(eta cos)}, {a, TIR}.
+// Children (one global enable, the output skid buffer's registered ready):
+//   SEQ             the hit register and its pending children, lowest first;
+//                   the next hit is loaded as the last child leaves
+//   C0   (1)        lv = light_k - p and the hit's n, dn, eta, a, d
+//   X/Y  (2)        SHADOW: n_i lv_i; REFLECT, TIR: dn n_i; REFRACT: eta d_i
+//                   and a n_i             6 multipliers shared by every kind
+//   C3   (1)        lit = sum > 0 (exact); r; t; the unit's input v
+//   U2   (2F+15)    unit(v)                    csgrt_unit #2, 3 multipliers,
+//                   shared by every child (its root is the shadow distance)
+//   skid (1)        output; p, d, in_range and user from the hit's queue
+//                   entry (written at SEQ load, read by the hit's last child)
+// Multipliers: 21 csgrt_mul: T 1 ((F+2) x B), G 3 (B x B), U1 3 ((B+2)^2),
+// ND 1 ((F+1) x B), eta^2 1 ((F+8)^2), S1 2 ((F+2)^2, (F+8) x (F+2)),
+// S3 1 ((F+15) x (F+2)), X 3 ((F+8) x (B+1)), Y 3 ((F+8) x (F+1)),
+// U2 3 ((F+8)^2).
+//
+// ---- Timing --------------------------------------------------------------------
+// Latency (no back-pressure, idle front): 5F+61 clocks from a hit's
+// acceptance to its first child (BITS 12: 106, 16: 126, 24: 166, 32: 206).
+// Throughput: one child per clock while hits are waiting at the sequencer:
+// a hit's children leave on consecutive clocks and the next hit's first
+// child follows its predecessor's last without a gap. The front accepts a
+// hit every third clock at most (hits with fewer than three children then
+// leave gaps), and at most 32 hits between input and sequencer and 32 hits
+// between sequencer and output (single-child hits in bursts).
+// Handshake: valid/ready on both sides. s_ready_o depends only on registers
+// (the front's phase and hit count); the child pipeline advances on the
+// output skid buffer's registered ready; no combinational path from
+// m_ready_i to s_ready_o. Back-pressure stops the children; the front keeps
+// running into its queues and stops accepting when 32 hits wait. Nothing is
+// lost or duplicated.
+module csgrt_spawn #(
+    parameter BITS       = 24,   // coordinate width B (12..32)
+    parameter MAX_LIGHTS = 8,    // lights (>= 1)
+    parameter USER_WIDTH = 1     // sideband width (>= 1)
+) (
+    input  wire                                   clk_i,
+    input  wire                                   rst_ni,      // synchronous, active low
+    // static configuration
+    input  wire [MAX_LIGHTS*3*BITS-1:0]           light_pos_i, // light k axis i at (3k+i)*BITS
+    // input stream: one hit
+    input  wire                                   s_valid_i,
+    output wire                                   s_ready_o,
+    input  wire [3*BITS-1:0]                      s_o_i,
+    input  wire [3*BITS-1:0]                      s_d_i,
+    input  wire [BITS-2:0]                        s_t_i,
+    input  wire [10*BITS-1:0]                     s_coef_i,
+    input  wire [15:0]                            s_ior_from_i,
+    input  wire [15:0]                            s_ior_to_i,
+    input  wire [MAX_LIGHTS-1:0]                  s_lights_i,
+    input  wire                                   s_reflect_i,
+    input  wire                                   s_refract_i,
+    input  wire                                   s_continue_i,
+    input  wire [USER_WIDTH-1:0]                  s_user_i,
+    // output stream: one child ray
+    output wire                                   m_valid_o,
+    input  wire                                   m_ready_i,
+    output wire                                   m_last_o,
+    output wire [2:0]                             m_kind_o,
+    output wire [((MAX_LIGHTS > 1) ? $clog2(MAX_LIGHTS) : 1)-1:0] m_light_o,
+    output wire [3*BITS-1:0]                      m_o_o,
+    output wire                                   m_in_range_o,
+    output wire [3*BITS-1:0]                      m_d_o,
+    output wire [BITS:0]                          m_dist_o,
+    output wire                                   m_lit_o,
+    output wire [USER_WIDTH-1:0]                  m_user_o
+);
+
+    // child kinds (m_kind_o)
+    localparam [2:0] KIND_CONTINUE    = 3'd0;   // transparent shadow crossing: same d
+    localparam [2:0] KIND_SHADOW      = 3'd1;   // towards light m_light_o
+    localparam [2:0] KIND_REFRACT     = 3'd2;   // transmitted (Snell)
+    localparam [2:0] KIND_TIR_REFLECT = 3'd3;   // transmitted asked, total internal reflection
+    localparam [2:0] KIND_REFLECT     = 3'd4;   // mirror reflection
+
+    // ---- formats -------------------------------------------------------------
+    localparam B    = BITS;
+    localparam F    = B - 3;
+    localparam FC   = B - 1;
+    localparam TW   = B - 1;          // t
+    localparam ML   = MAX_LIGHTS;
+    localparam LW   = (ML > 1) ? $clog2(ML) : 1;
+    localparam FLW  = ML + 3;         // child flags {reflect, refract, lights, continue}
+    localparam UW   = USER_WIDTH;
+    localparam SQ   = F + 8;          // geo_sqrt_stages(F)
+    localparam UOW  = F + 2;          // csgrt_unit output component
+    localparam CTX  = 32;             // queue depth, hits admitted ahead of the sequencer
+    localparam CW   = 6;              // counter 0..CTX
+    localparam [CW-1:0] CTX_N = CTX;
+    localparam PTW  = TW + B;         // t d
+    localparam PPW  = B + 1;          // p before the range check, |p| < 6
+    localparam GPW  = 2 * B;          // A_ij p_j
+    localparam ACCW = 2 * B + 2;      // |sum| < 13 * 2^(F+FC)
+    localparam GW   = B + 2;          // g, |g| < 16
+    localparam NW   = F + 1;          // n, |n_i| < 2^F
+    localparam NDPW = NW + B;         // n_j d_j
+    localparam NDSW = NDPW + 2;       // n . d
+    localparam DNW  = F + 2;          // dn, cos, sin2: |.| <= 2^F
+    localparam EMW  = F + 7;          // eta magnitude (quotient bits)
+    localparam ETW  = F + 8;          // eta signed
+    localparam E2W  = F + 15;         // rnd(eta^2, F) < 2^(F+14), signed
+    localparam KW   = F + 16;         // k in [-2^(F+14), 2^F]
+    localparam AW   = F + 8;          // rnd(eta cos, F) < 2^(F+7), a
+    localparam SKB  = F + 1;          // isqrt(k << F) stages: k << F <= 2^(2F)
+    localparam LVW  = B + 1;          // lv = light - p, r
+    localparam XAW  = F + 8;          // X multiplier: n | dn | eta
+    localparam XBW  = B + 1;          //               lv | n | d
+    localparam XPW  = XAW + XBW;
+    localparam XSW  = XPW + 2;
+    localparam YAW  = AW;             // Y multiplier: a
+    localparam YBW  = NW;             //               n
+    localparam YPW  = YAW + YBW;
+    localparam TSW  = F + 9;          // t_i = rnd(eta d_i) + rnd(a n_i)
+    localparam VW2  = F + 8;          // child unit input: |v_i| < 128
+
+    genvar i;
+    integer k, kl;
+
+    wire accept;     // a hit enters the front
+    wire seq_load;   // a hit leaves the front's queues into the sequencer
+
+    // =========================================================================
+    // Front
+    // =========================================================================
+    // ---- H: the hit, three phases --------------------------------------------
+    reg [CW-1:0]  cnt_q;     // hits admitted and not yet loaded by the sequencer
+    reg           h_valid_q;
+    reg [1:0]     h_ph_q;
+    reg [3*B-1:0] h_o_q, h_d_q;
+    reg [TW-1:0]  h_t_q;
+    reg [9*B-1:0] h_coef_q;   // q is not needed
+
+    assign s_ready_o = (cnt_q != CTX_N) && (!h_valid_q || h_ph_q == 2'd2);
+    assign accept    = s_valid_i && s_ready_o;
+    wire unused_q    = ^s_coef_i[9*B +: B];
+
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            h_valid_q <= 1'b0;
+            h_ph_q    <= 2'd0;
+            cnt_q     <= {CW{1'b0}};
+        end else begin
+            if (accept) begin
+                h_valid_q <= 1'b1;
+                h_ph_q    <= 2'd0;
+            end else if (h_valid_q) begin
+                h_ph_q <= h_ph_q + 2'd1;
+                if (h_ph_q == 2'd2) h_valid_q <= 1'b0;
+            end
+            cnt_q <= cnt_q + {{(CW-1){1'b0}}, accept} - {{(CW-1){1'b0}}, seq_load};
+        end
+        if (accept) begin
+            h_o_q    <= s_o_i;
+            h_d_q    <= s_d_i;
+            h_t_q    <= s_t_i;
+            h_coef_q <= s_coef_i[0 +: 9*B];
+        end
+    end
+
+    // the hit's d, flags and user wait for the sequencer; d also for ND
+    localparam QHW = 3 * B + FLW + UW;
+    wire [FLW-1:0] s_flags = {s_reflect_i, s_refract_i, s_lights_i, s_continue_i};
+    wire [QHW-1:0] qh_data;
+    wire           unused_qh_ready, unused_qh_valid;
+    csgrt_fifo #(.WIDTH(QHW), .DEPTH(CTX)) u_q_hit (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qh_ready),
+        .data_i({s_user_i, s_flags, s_d_i}), .valid_o(unused_qh_valid), .ready_i(seq_load), .data_o(qh_data));
+    wire [3*B-1:0] qh_d     = qh_data[0 +: 3*B];
+    wire [FLW-1:0] qh_flags = qh_data[3*B +: FLW];
+    wire [UW-1:0]  qh_user  = qh_data[3*B+FLW +: UW];
+
+    wire [3*B-1:0] qnd_d;
+    wire           qnd_pop;
+    wire           unused_qnd_ready, unused_qnd_valid;
+    csgrt_fifo #(.WIDTH(3 * B), .DEPTH(CTX)) u_q_nd (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qnd_ready),
+        .data_i(s_d_i), .valid_o(unused_qnd_valid), .ready_i(qnd_pop), .data_o(qnd_d));
+
+    // phase j: axis j of t d, column j of the gradient {P_j, A_2j, A_1j, A_0j}
+    reg [B-1:0]   h_dj, h_oj;
+    reg [4*B-1:0] h_col;
+    always @* begin
+        case (h_ph_q)
+            2'd0: begin
+                h_dj  = h_d_q[0 +: B];
+                h_oj  = h_o_q[0 +: B];
+                h_col = {h_coef_q[6*B +: B], h_coef_q[4*B +: B], h_coef_q[3*B +: B], h_coef_q[0*B +: B]};
+            end
+            2'd1: begin
+                h_dj  = h_d_q[B +: B];
+                h_oj  = h_o_q[B +: B];
+                h_col = {h_coef_q[7*B +: B], h_coef_q[5*B +: B], h_coef_q[1*B +: B], h_coef_q[3*B +: B]};
+            end
+            default: begin
+                h_dj  = h_d_q[2*B +: B];
+                h_oj  = h_o_q[2*B +: B];
+                h_col = {h_coef_q[8*B +: B], h_coef_q[2*B +: B], h_coef_q[5*B +: B], h_coef_q[4*B +: B]};
+            end
+        endcase
+    end
+
+    // ---- T: t d_j ------------------------------------------------------------
+    wire [PTW-1:0] td_p;
+    wire           unused_td_v;
+    csgrt_mul #(.A_WIDTH(TW), .B_WIDTH(B)) u_mul_t (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(h_valid_q),
+        .a_i(h_t_q), .b_i(h_dj), .valid_o(unused_td_v), .p_o(td_p));
+    localparam TSDW = 2 + B + 4 * B;
+    wire            t_valid;
+    wire [TSDW-1:0] t_side;
+    csgrt_delay #(.WIDTH(TSDW), .STAGES(2)) u_dly_t (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(h_valid_q),
+        .data_i({h_col, h_oj, h_ph_q}), .valid_o(t_valid), .data_o(t_side));
+    wire [1:0]     t_colj = t_side[1:0];
+    wire [B-1:0]   t_oj   = t_side[2 +: B];
+    wire [4*B-1:0] t_cc   = t_side[2+B +: 4*B];
+
+    // ---- P: p_j = o_j + rnd(t d_j, F) ----------------------------------------------
+    wire [PTW-1:0] td_r = td_p + {{(PTW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+    wire [PPW-1:0] tdr  = td_r[F +: PPW];              // |rnd(t d)| <= 2^(F+1)
+    wire unused_td_r    = ^{td_r[F-1:0], td_r[PTW-1:F+PPW]};
+    wire [PPW-1:0] pj   = {t_oj[B-1], t_oj} + tdr;
+    wire           inr_j = (pj[B] == pj[B-1]);         // fits B bits: [-4, 4)
+
+    reg           p_valid_q;
+    reg [1:0]     p_col_q;
+    reg [B-1:0]   p_val_q;
+    reg [4*B-1:0] p_cc_q;
+    reg [3*B-1:0] p_vec_q;
+    reg [2:0]     p_inr_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) p_valid_q <= 1'b0;
+        else p_valid_q <= t_valid;
+        if (t_valid) begin
+            p_col_q <= t_colj;
+            p_val_q <= pj[B-1:0];
+            p_cc_q  <= t_cc;
+            case (t_colj)
+                2'd0:    begin p_vec_q[0 +: B]   <= pj[B-1:0]; p_inr_q[0] <= inr_j; end
+                2'd1:    begin p_vec_q[B +: B]   <= pj[B-1:0]; p_inr_q[1] <= inr_j; end
+                default: begin p_vec_q[2*B +: B] <= pj[B-1:0]; p_inr_q[2] <= inr_j; end
+            endcase
+        end
+    end
+    // column 2 in P: the whole p is known
+    wire           qp_push = p_valid_q && (p_col_q == 2'd2);
+    wire [3*B:0]   qp_data;
+    wire           unused_qp_ready, unused_qp_valid;
+    csgrt_fifo #(.WIDTH(3 * B + 1), .DEPTH(CTX)) u_q_p (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(qp_push), .ready_o(unused_qp_ready),
+        .data_i({&p_inr_q, p_vec_q}), .valid_o(unused_qp_valid), .ready_i(seq_load), .data_o(qp_data));
+    wire [3*B-1:0] qp_p   = qp_data[0 +: 3*B];
+    wire           qp_inr = qp_data[3*B];
+
+    // ---- G: A_ij p_j, column j -------------------------------------------------------
+    wire [3*GPW-1:0] gp;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_grad
+            wire unused_v;
+            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(p_valid_q),
+                .a_i(p_cc_q[i*B +: B]), .b_i(p_val_q), .valid_o(unused_v), .p_o(gp[i*GPW +: GPW]));
+        end
+    endgenerate
+    wire           g_valid;
+    wire [B+1:0]   g_side;
+    csgrt_delay #(.WIDTH(B + 2), .STAGES(2)) u_dly_g (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(p_valid_q),
+        .data_i({p_cc_q[3*B +: B], p_col_q}), .valid_o(g_valid), .data_o(g_side));
+    wire [1:0]   g_col = g_side[1:0];
+    wire [B-1:0] g_pc  = g_side[2 +: B];   // P_j
+
+    // ---- ACC: g_i = rnd(sum_j A_ij p_j + (P_i << F), FC) ------------------------------
+    reg  [3*ACCW-1:0] acc_q;
+    wire [3*ACCW-1:0] acc_d;
+    reg               acc_done_q;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_acc
+            wire [GPW-1:0]  prod = gp[i*GPW +: GPW];
+            wire [ACCW-1:0] base = (g_col == 2'd0) ? {{(ACCW-FC){1'b0}}, 1'b1, {(FC-1){1'b0}}}
+                                                   : acc_q[i*ACCW +: ACCW];
+            wire [ACCW-1:0] pc   = (g_col == i) ? {{(ACCW-B-F){g_pc[B-1]}}, g_pc, {F{1'b0}}}
+                                                : {ACCW{1'b0}};
+            assign acc_d[i*ACCW +: ACCW] = base + {{(ACCW-GPW){prod[GPW-1]}}, prod} + pc;
+        end
+    endgenerate
+    always @(posedge clk_i) begin
+        if (!rst_ni) acc_done_q <= 1'b0;
+        else acc_done_q <= g_valid && (g_col == 2'd2);
+        if (g_valid) acc_q <= acc_d;
+    end
+    wire [3*GW-1:0] g_vec;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_gvec
+            assign g_vec[i*GW +: GW] = acc_q[i*ACCW + FC +: GW];
+            // below: the rounded-off bits; above: sign copies (|g| < 16)
+            wire unused_acc = ^{acc_q[i*ACCW +: FC], acc_q[i*ACCW + FC + GW +: ACCW - FC - GW]};
+        end
+    endgenerate
+
+    // ---- U1: n = unit(g) --------------------------------------------------------------
+    wire             u1_valid;
+    wire [3*UOW-1:0] u1_u;
+    wire [SQ-1:0]    unused_u1_root;
+    wire             unused_u1_user;
+    csgrt_unit #(.VW(GW), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(1)) u_unit_n (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(acc_done_q),
+        .v_i(g_vec), .user_i(1'b0),
+        .valid_o(u1_valid), .u_o(u1_u), .root_o(unused_u1_root), .user_o(unused_u1_user));
+    wire [3*NW-1:0] u1_n = {u1_u[2*UOW +: NW], u1_u[UOW +: NW], u1_u[0 +: NW]};
+    // |n_i| < 2^F: the top bit is a sign copy
+    wire unused_u1_top = ^{u1_u[3*UOW-1], u1_u[2*UOW-1], u1_u[UOW-1]};
+
+    // ---- ND: n . d, one axis per clock --------------------------------------------------
+    reg            nh_valid_q;
+    reg [1:0]      nh_ph_q;
+    reg [3*NW-1:0] nh_n_q, nh2_n_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            nh_valid_q <= 1'b0;
+            nh_ph_q    <= 2'd0;
+        end else if (u1_valid) begin
+            nh_valid_q <= 1'b1;
+            nh_ph_q    <= 2'd0;
+        end else if (nh_valid_q) begin
+            nh_ph_q <= nh_ph_q + 2'd1;
+            if (nh_ph_q == 2'd2) nh_valid_q <= 1'b0;
+        end
+        if (u1_valid) nh_n_q <= u1_n;
+        if (nh_valid_q && nh_ph_q == 2'd2) nh2_n_q <= nh_n_q;   // kept for the flip
+    end
+    assign qnd_pop = nh_valid_q && (nh_ph_q == 2'd2);
+    reg [NW-1:0] nh_nj;
+    reg [B-1:0]  nh_dj;
+    always @* begin
+        case (nh_ph_q)
+            2'd0:    begin nh_nj = nh_n_q[0 +: NW];    nh_dj = qnd_d[0 +: B];   end
+            2'd1:    begin nh_nj = nh_n_q[NW +: NW];   nh_dj = qnd_d[B +: B];   end
+            default: begin nh_nj = nh_n_q[2*NW +: NW]; nh_dj = qnd_d[2*B +: B]; end
+        endcase
+    end
+    wire [NDPW-1:0] ndp;
+    wire            unused_nd_v;
+    csgrt_mul #(.A_WIDTH(NW), .B_WIDTH(B)) u_mul_nd (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(nh_valid_q),
+        .a_i(nh_nj), .b_i(nh_dj), .valid_o(unused_nd_v), .p_o(ndp));
+    wire       nd_valid;
+    wire [1:0] nd_col;
+    csgrt_delay #(.WIDTH(2), .STAGES(2)) u_dly_nd (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(nh_valid_q),
+        .data_i(nh_ph_q), .valid_o(nd_valid), .data_o(nd_col));
+    reg [NDSW-1:0] nd_acc_q;
+    reg            nd_done_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) nd_done_q <= 1'b0;
+        else nd_done_q <= nd_valid && (nd_col == 2'd2);
+        if (nd_valid)
+            nd_acc_q <= ((nd_col == 2'd0) ? {NDSW{1'b0}} : nd_acc_q) + {{(NDSW-NDPW){ndp[NDPW-1]}}, ndp};
+    end
+
+    // ---- NDA: face the ray (exact sign of n . d) --------------------------------------------
+    wire            flip = !nd_acc_q[NDSW-1] && (nd_acc_q != {NDSW{1'b0}});
+    reg             nda_valid_q;
+    reg [NDSW-1:0]  nda_ndf_q;   // d . n after the flip
+    reg [3*NW-1:0]  nda_n_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) nda_valid_q <= 1'b0;
+        else nda_valid_q <= nd_done_q;
+        nda_ndf_q <= flip ? {NDSW{1'b0}} - nd_acc_q : nd_acc_q;
+        for (k = 0; k < 3; k = k + 1)
+            nda_n_q[k*NW +: NW] <= flip ? {NW{1'b0}} - nh2_n_q[k*NW +: NW] : nh2_n_q[k*NW +: NW];
+    end
+
+    // ---- NDB: dn = rnd(d . n, F), cos = -dn ----------------------------------------------------
+    wire [NDSW-1:0] ndf_r = nda_ndf_q + {{(NDSW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+    wire [DNW-1:0]  dn_d  = ndf_r[F +: DNW];   // |d . n| < 1: |dn| <= 2^F
+    wire unused_ndf_r     = ^{ndf_r[F-1:0], ndf_r[NDSW-1:F+DNW]};
+    reg             ndb_valid_q;
+    reg [DNW-1:0]   ndb_dn_q, ndb_cos_q;
+    reg [3*NW-1:0]  ndb_n_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) ndb_valid_q <= 1'b0;
+        else ndb_valid_q <= nda_valid_q;
+        ndb_dn_q  <= dn_d;
+        ndb_cos_q <= {DNW{1'b0}} - dn_d;
+        ndb_n_q   <= nda_n_q;
+    end
+    // the faced normal and dn wait for the sequencer
+    wire [3*NW+DNW-1:0] qn_data;
+    wire                unused_qn_ready, unused_qn_valid;
+    csgrt_fifo #(.WIDTH(3 * NW + DNW), .DEPTH(CTX)) u_q_n (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(ndb_valid_q), .ready_o(unused_qn_ready),
+        .data_i({ndb_dn_q, ndb_n_q}), .valid_o(unused_qn_valid), .ready_i(seq_load), .data_o(qn_data));
+    wire [3*NW-1:0] qn_n  = qn_data[0 +: 3*NW];
+    wire [DNW-1:0]  qn_dn = qn_data[3*NW +: DNW];
+
+    // ---- eta = div(ior_from << F, ior_to, F+7), eta2 = rnd(eta^2, F) --------------------------
+    wire           eta_valid, eta_ovf;
+    wire [EMW-1:0] eta_mag;
+    wire           unused_eta_neg, unused_eta_user;
+    csgrt_div_core #(.NUM_WIDTH(17 + F), .DEN_WIDTH(17), .QUOT_BITS(EMW), .USER_WIDTH(1)) u_div_eta (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(accept),
+        .num_i({1'b0, s_ior_from_i, {F{1'b0}}}), .den_i({1'b0, s_ior_to_i}), .user_i(1'b0),
+        .valid_o(eta_valid), .quot_o(eta_mag), .neg_o(unused_eta_neg), .ovf_o(eta_ovf),
+        .user_o(unused_eta_user));
+    // the model leaves eta at 0 when the quotient overflows (ior_to = 0)
+    wire [EMW-1:0] eta = eta_ovf ? {EMW{1'b0}} : eta_mag;
+    wire [2*ETW-1:0] e2p;
+    wire             unused_e2_v;
+    csgrt_mul #(.A_WIDTH(ETW), .B_WIDTH(ETW)) u_mul_e2 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(eta_valid),
+        .a_i({1'b0, eta}), .b_i({1'b0, eta}), .valid_o(unused_e2_v), .p_o(e2p));
+    wire           e2_valid;
+    wire [EMW-1:0] e2_eta;
+    csgrt_delay #(.WIDTH(EMW), .STAGES(2)) u_dly_e2 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(eta_valid),
+        .data_i(eta), .valid_o(e2_valid), .data_o(e2_eta));
+    wire [2*ETW-1:0] e2r  = e2p + {{(2*ETW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+    wire [E2W-1:0]   eta2 = e2r[F +: E2W];
+    wire unused_e2r       = ^{e2r[F-1:0], e2r[2*ETW-1:F+E2W]};
+    // {eta2, eta} for S1; eta for the sequencer
+    wire [E2W+EMW-1:0] qe_data;
+    wire               qe_pop;
+    wire               unused_qe_ready, unused_qe_valid;
+    csgrt_fifo #(.WIDTH(E2W + EMW), .DEPTH(CTX)) u_q_e (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(e2_valid), .ready_o(unused_qe_ready),
+        .data_i({eta2, e2_eta}), .valid_o(unused_qe_valid), .ready_i(qe_pop), .data_o(qe_data));
+    wire [EMW-1:0] qe_eta  = qe_data[0 +: EMW];
+    wire [E2W-1:0] qe_eta2 = qe_data[EMW +: E2W];
+    wire [EMW-1:0] qeta_eta;
+    wire           unused_qeta_ready, unused_qeta_valid;
+    csgrt_fifo #(.WIDTH(EMW), .DEPTH(CTX)) u_q_eta (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(e2_valid), .ready_o(unused_qeta_ready),
+        .data_i(e2_eta), .valid_o(unused_qeta_valid), .ready_i(seq_load), .data_o(qeta_eta));
+
+    // ---- S1: cos^2, eta cos ------------------------------------------------------------------
+    assign qe_pop = ndb_valid_q;
+    localparam C2PW = 2 * DNW;
+    localparam ECPW = ETW + DNW;
+    wire [C2PW-1:0] c2p;
+    wire [ECPW-1:0] ecp;
+    wire            unused_c2_v, unused_ec_v;
+    csgrt_mul #(.A_WIDTH(DNW), .B_WIDTH(DNW)) u_mul_c2 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
+        .a_i(ndb_cos_q), .b_i(ndb_cos_q), .valid_o(unused_c2_v), .p_o(c2p));
+    csgrt_mul #(.A_WIDTH(ETW), .B_WIDTH(DNW)) u_mul_ec (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
+        .a_i({1'b0, qe_eta}), .b_i(ndb_cos_q), .valid_o(unused_ec_v), .p_o(ecp));
+    wire           s1_valid;
+    wire [E2W-1:0] s1_eta2;
+    csgrt_delay #(.WIDTH(E2W), .STAGES(2)) u_dly_s1 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
+        .data_i(qe_eta2), .valid_o(s1_valid), .data_o(s1_eta2));
+
+    // ---- S2: sin2 = 1 - rnd(cos^2, F); rnd(eta cos, F) -------------------------------------
+    wire [C2PW-1:0] c2r  = c2p + {{(C2PW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+    wire [DNW-1:0]  sin2 = {{(DNW-F-1){1'b0}}, 1'b1, {F{1'b0}}} - c2r[F +: DNW];   // in [0, 2^F]
+    wire [ECPW-1:0] ecr  = ecp + {{(ECPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+    wire [AW-1:0]   ec   = ecr[F +: AW];
+    wire unused_s2       = ^{c2r[F-1:0], c2r[C2PW-1:F+DNW], ecr[F-1:0], ecr[ECPW-1:F+AW]};
+    reg             s2_valid_q;
+    reg [DNW-1:0]   s2_sin2_q;
+    reg [E2W-1:0]   s2_eta2_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) s2_valid_q <= 1'b0;
+        else s2_valid_q <= s1_valid;
+        s2_sin2_q <= sin2;
+        s2_eta2_q <= s1_eta2;
+    end
+    // rnd(eta cos, F) waits for sk
+    wire [AW-1:0] qec_ec;
+    wire          qec_pop;
+    wire          unused_qec_ready, unused_qec_valid;
+    csgrt_fifo #(.WIDTH(AW), .DEPTH(CTX)) u_q_ec (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(s1_valid), .ready_o(unused_qec_ready),
+        .data_i(ec), .valid_o(unused_qec_valid), .ready_i(qec_pop), .data_o(qec_ec));
+
+    // ---- S3: rnd(eta^2, F) sin2 -----------------------------------------------------------
+    localparam KPW = E2W + DNW;
+    wire [KPW-1:0] kp;
+    wire           unused_k_v;
+    csgrt_mul #(.A_WIDTH(E2W), .B_WIDTH(DNW)) u_mul_k (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s2_valid_q),
+        .a_i(s2_eta2_q), .b_i(s2_sin2_q), .valid_o(unused_k_v), .p_o(kp));
+    wire s3_valid;
+    wire unused_s3_data;
+    csgrt_delay #(.WIDTH(1), .STAGES(2)) u_dly_s3 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s2_valid_q),
+        .data_i(1'b0), .valid_o(s3_valid), .data_o(unused_s3_data));
+
+    // ---- S4: k = 1 - rnd(., F); TIR when k < 0; the radicand k << F ------------------------
+    wire [KPW-1:0] kr  = kp + {{(KPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+    wire [KW-1:0]  kk  = {{(KW-F-1){1'b0}}, 1'b1, {F{1'b0}}} - kr[F +: KW];
+    wire unused_kr     = ^{kr[F-1:0], kr[KPW-1:F+KW]};
+    wire           tir = kk[KW-1];
+    reg            s4_valid_q, s4_tir_q;
+    reg [2*SKB-1:0] s4_rad_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) s4_valid_q <= 1'b0;
+        else s4_valid_q <= s3_valid;
+        s4_tir_q <= tir;
+        // k >= 0 means k <= 2^F: k << F < 4^(F+1)
+        s4_rad_q <= tir ? {(2*SKB){1'b0}} : {1'b0, kk[F:0], {F{1'b0}}};
+    end
+    wire unused_kk = ^kk[KW-2:F+1];
+
+    // ---- S5: sk = isqrt(k << F) ---------------------------------------------------------------
+    wire           s5_valid, s5_tir;
+    wire [SKB-1:0] s5_sk;
+    csgrt_sqrt_core #(.RESULT_BITS(SKB), .USER_WIDTH(1)) u_sqrt_k (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s4_valid_q),
+        .n_i(s4_rad_q), .user_i(s4_tir_q), .valid_o(s5_valid), .root_o(s5_sk), .user_o(s5_tir));
+
+    // ---- S6: a = rnd(eta cos, F) - sk ----------------------------------------------------------
+    assign qec_pop = s5_valid;
+    wire [AW-1:0]  a_d = qec_ec - {{(AW-SKB){1'b0}}, s5_sk};
+    wire [AW:0]    qf_data;
+    wire           qf_valid;
+    wire           unused_qf_ready;
+    csgrt_fifo #(.WIDTH(AW + 1), .DEPTH(CTX)) u_q_fin (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(s5_valid), .ready_o(unused_qf_ready),
+        .data_i({s5_tir, a_d}), .valid_o(qf_valid), .ready_i(seq_load), .data_o(qf_data));
+    wire [AW-1:0] qf_a   = qf_data[0 +: AW];
+    wire          qf_tir = qf_data[AW];
+
+    // =========================================================================
+    // Children
+    // =========================================================================
+    wire en_c;   // child pipeline enable: the output skid buffer's ready
+
+    // ---- SEQ: the current hit and its pending children ------------------------------
+    reg             cur_valid_q;
+    reg [FLW-1:0]   cur_pend_q;
+    reg [3*B-1:0]   cur_d_q, cur_p_q;
+    reg [3*NW-1:0]  cur_n_q;
+    reg [DNW-1:0]   cur_dn_q;
+    reg [EMW-1:0]   cur_eta_q;
+    reg [AW-1:0]    cur_a_q;
+    reg             cur_tir_q;
+
+    wire            issue = en_c && cur_valid_q;
+    wire [FLW-1:0]  pick  = cur_pend_q & (~cur_pend_q + {{(FLW-1){1'b0}}, 1'b1});   // lowest pending
+    wire [FLW-1:0]  rest  = cur_pend_q & ~pick;
+    wire            last  = (rest == {FLW{1'b0}});
+    wire            free  = !cur_valid_q || (issue && last);
+    wire            qo_ready;
+    assign seq_load = free && qf_valid && qo_ready;
+    wire            qo_push = seq_load && (qh_flags != {FLW{1'b0}});
+
+    reg [2:0]      kind;
+    reg [LW-1:0]   light;
+    reg [3*B-1:0]  lpos;
+    always @* begin
+        if (pick[0])             kind = KIND_CONTINUE;
+        else if (pick[ML+1])     kind = cur_tir_q ? KIND_TIR_REFLECT : KIND_REFRACT;
+        else if (pick[ML+2])     kind = KIND_REFLECT;
+        else                     kind = KIND_SHADOW;
+        light = {LW{1'b0}};
+        lpos  = {(3*B){1'b0}};
+        for (kl = 0; kl < ML; kl = kl + 1)
+            if (pick[1+kl]) begin
+                light = light | kl[LW-1:0];
+                lpos  = lpos | light_pos_i[kl*3*B +: 3*B];
+            end
+    end
+    wire [3*LVW-1:0] lv;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_lv
+            wire [B-1:0] lp = lpos[i*B +: B];
+            wire [B-1:0] pp = cur_p_q[i*B +: B];
+            assign lv[i*LVW +: LVW] = {lp[B-1], lp} - {pp[B-1], pp};
+        end
+    endgenerate
+
+    always @(posedge clk_i) begin
+        if (!rst_ni) cur_valid_q <= 1'b0;
+        else if (seq_load) cur_valid_q <= (qh_flags != {FLW{1'b0}});
+        else if (issue && last) cur_valid_q <= 1'b0;
+        if (seq_load) begin
+            cur_pend_q <= qh_flags;
+            cur_d_q    <= qh_d;
+            cur_p_q    <= qp_p;
+            cur_n_q    <= qn_n;
+            cur_dn_q   <= qn_dn;
+            cur_eta_q  <= qeta_eta;
+            cur_a_q    <= qf_a;
+            cur_tir_q  <= qf_tir;
+        end else if (issue) begin
+            cur_pend_q <= rest;
+        end
+    end
+
+    // ---- C0: one child --------------------------------------------------------------------
+    reg             c0_valid_q, c0_last_q;
+    reg [2:0]       c0_kind_q;
+    reg [LW-1:0]    c0_light_q;
+    reg [3*LVW-1:0] c0_lv_q;
+    reg [3*B-1:0]   c0_d_q;
+    reg [3*NW-1:0]  c0_n_q;
+    reg [DNW-1:0]   c0_dn_q;
+    reg [EMW-1:0]   c0_eta_q;
+    reg [AW-1:0]    c0_a_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) c0_valid_q <= 1'b0;
+        else if (en_c) c0_valid_q <= cur_valid_q;
+        if (en_c) begin
+            c0_last_q  <= last;
+            c0_kind_q  <= kind;
+            c0_light_q <= light;
+            c0_lv_q    <= lv;
+            c0_d_q     <= cur_d_q;
+            c0_n_q     <= cur_n_q;
+            c0_dn_q    <= cur_dn_q;
+            c0_eta_q   <= cur_eta_q;
+            c0_a_q     <= cur_a_q;
+        end
+    end
+
+    // ---- X/Y: the child's products ----------------------------------------------------------
+    wire [3*XPW-1:0] xp;
+    wire [3*YPW-1:0] yp;
+    wire [3*LVW-1:0] base;   // SHADOW: lv; else d
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_xy
+            wire [NW-1:0]  n  = c0_n_q[i*NW +: NW];
+            wire [B-1:0]   d  = c0_d_q[i*B +: B];
+            wire [LVW-1:0] l  = c0_lv_q[i*LVW +: LVW];
+            reg  [XAW-1:0] xa;
+            reg  [XBW-1:0] xb;
+            always @* begin
+                case (c0_kind_q)
+                    KIND_SHADOW: begin
+                        xa = {{(XAW-NW){n[NW-1]}}, n};
+                        xb = l;
+                    end
+                    KIND_REFRACT: begin
+                        xa = {1'b0, c0_eta_q};
+                        xb = {d[B-1], d};
+                    end
+                    default: begin   // REFLECT, TIR_REFLECT (CONTINUE: unused)
+                        xa = {{(XAW-DNW){c0_dn_q[DNW-1]}}, c0_dn_q};
+                        xb = {{(XBW-NW){n[NW-1]}}, n};
+                    end
+                endcase
+            end
+            wire unused_xv, unused_yv;
+            csgrt_mul #(.A_WIDTH(XAW), .B_WIDTH(XBW)) u_mul_x (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
+                .a_i(xa), .b_i(xb), .valid_o(unused_xv), .p_o(xp[i*XPW +: XPW]));
+            csgrt_mul #(.A_WIDTH(YAW), .B_WIDTH(YBW)) u_mul_y (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
+                .a_i(c0_a_q), .b_i(n), .valid_o(unused_yv), .p_o(yp[i*YPW +: YPW]));
+            assign base[i*LVW +: LVW] = (c0_kind_q == KIND_SHADOW) ? l : {d[B-1], d};
+        end
+    endgenerate
+    localparam XSDW = 3 * LVW + 3 + LW + 1;
+    wire            x_valid;
+    wire [XSDW-1:0] x_side;
+    csgrt_delay #(.WIDTH(XSDW), .STAGES(2)) u_dly_x (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
+        .data_i({c0_last_q, c0_light_q, c0_kind_q, base}), .valid_o(x_valid), .data_o(x_side));
+    wire [3*LVW-1:0] x_base  = x_side[0 +: 3*LVW];
+    wire [2:0]       x_kind  = x_side[3*LVW +: 3];
+    wire [LW-1:0]    x_light = x_side[3*LVW+3 +: LW];
+    wire             x_last  = x_side[3*LVW+3+LW];
+
+    // ---- C3: lit, r, t: the unit's input ----------------------------------------------------
+    wire [XSW-1:0] xs = {{2{xp[XPW-1]}}, xp[0 +: XPW]} + {{2{xp[2*XPW-1]}}, xp[XPW +: XPW]}
+                      + {{2{xp[3*XPW-1]}}, xp[2*XPW +: XPW]};
+    wire           lit = !xs[XSW-1] && (xs != {XSW{1'b0}});   // n . lv > 0
+    wire [3*VW2-1:0] v_d;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_c3
+            wire [XPW-1:0] x  = xp[i*XPW +: XPW];
+            wire [YPW-1:0] y  = yp[i*YPW +: YPW];
+            wire [LVW-1:0] bs = x_base[i*LVW +: LVW];
+            // reflect: d - rnd(2 dn n_i, F) = d - rnd(dn n_i, F-1)
+            wire [XPW-1:0] x1r  = x + {{(XPW-F+1){1'b0}}, 1'b1, {(F-2){1'b0}}};
+            wire [LVW-1:0] refl = bs - x1r[F-1 +: LVW];
+            // refract: rnd(eta d_i, F) + rnd(a n_i, F)
+            wire [XPW-1:0] xr   = x + {{(XPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            wire [YPW-1:0] yr   = y + {{(YPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            wire [TSW-1:0] refr = xr[F +: TSW] + yr[F +: TSW];
+            wire unused_c3 = ^{x1r[F-2:0], x1r[XPW-1:F-1+LVW], xr[F-1:0], xr[XPW-1:F+TSW],
+                               yr[F-1:0], refr[TSW-1]};
+            reg [VW2-1:0] v;
+            always @* begin
+                case (x_kind)
+                    KIND_SHADOW:      v = {{(VW2-LVW){bs[LVW-1]}}, bs};
+                    KIND_REFRACT:     v = refr[VW2-1:0];   // |t_i| < 128 (unit_fx's bound)
+                    KIND_CONTINUE:    v = {VW2{1'b0}};
+                    default:          v = {{(VW2-LVW){refl[LVW-1]}}, refl};
+                endcase
+            end
+            assign v_d[i*VW2 +: VW2] = v;
+        end
+    endgenerate
+    reg             c3_valid_q, c3_last_q, c3_lit_q;
+    reg [2:0]       c3_kind_q;
+    reg [LW-1:0]    c3_light_q;
+    reg [3*VW2-1:0] c3_v_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) c3_valid_q <= 1'b0;
+        else if (en_c) c3_valid_q <= x_valid;
+        if (en_c) begin
+            c3_v_q     <= v_d;
+            c3_kind_q  <= x_kind;
+            c3_light_q <= x_light;
+            c3_last_q  <= x_last;
+            c3_lit_q   <= (x_kind == KIND_SHADOW) && lit;
+        end
+    end
+
+    // ---- U2: unit(v) ----------------------------------------------------------------------
+    localparam U2UW = 3 + LW + 2;
+    wire             u2_valid;
+    wire [3*UOW-1:0] u2_u;
+    wire [SQ-1:0]    u2_root;
+    wire [U2UW-1:0]  u2_user;
+    csgrt_unit #(.VW(VW2), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(U2UW)) u_unit_c (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c3_valid_q),
+        .v_i(c3_v_q), .user_i({c3_lit_q, c3_last_q, c3_light_q, c3_kind_q}),
+        .valid_o(u2_valid), .u_o(u2_u), .root_o(u2_root), .user_o(u2_user));
+    wire [2:0]    o_kind  = u2_user[0 +: 3];
+    wire [LW-1:0] o_light = u2_user[3 +: LW];
+    wire          o_last  = u2_user[3+LW];
+    wire          o_lit   = u2_user[4+LW];
+
+    // ---- the hit's p, d, in_range, user for its children ---------------------------------
+    localparam QOW = 6 * B + 1 + UW;
+    wire [QOW-1:0] qo_data;
+    wire           qo_pop = en_c && u2_valid && o_last;
+    wire           unused_qo_valid;
+    csgrt_fifo #(.WIDTH(QOW), .DEPTH(CTX)) u_q_out (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(qo_push), .ready_o(qo_ready),
+        .data_i({qh_user, qp_inr, qh_d, qp_p}), .valid_o(unused_qo_valid), .ready_i(qo_pop), .data_o(qo_data));
+    wire [3*B-1:0] qo_p   = qo_data[0 +: 3*B];
+    wire [3*B-1:0] qo_d   = qo_data[3*B +: 3*B];
+    wire           qo_inr = qo_data[6*B];
+    wire [UW-1:0]  qo_user = qo_data[6*B+1 +: UW];
+
+    // ---- output ---------------------------------------------------------------------------
+    wire [3*B-1:0] o_dir;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_dir
+            wire [UOW-1:0] u = u2_u[i*UOW +: UOW];
+            assign o_dir[i*B +: B] = (o_kind == KIND_CONTINUE) ? qo_d[i*B +: B] : {u[UOW-1], u};
+        end
+    endgenerate
+    // the distance < 14: F+4 bits
+    wire [B:0] o_dist = (o_kind == KIND_SHADOW) ? u2_root[B:0] : {(B+1){1'b0}};
+    wire unused_root  = ^u2_root[SQ-1:B+1];
+
+    localparam OUTW = 1 + 3 + LW + 3 * B + 1 + 3 * B + (B + 1) + 1 + UW;
+    csgrt_skid #(.WIDTH(OUTW)) u_skid (
+        .clk_i(clk_i), .rst_ni(rst_ni),
+        .valid_i(u2_valid), .ready_o(en_c),
+        .data_i({qo_user, o_lit, o_dist, o_dir, qo_inr, qo_p, o_light, o_kind, o_last}),
+        .valid_o(m_valid_o), .ready_i(m_ready_i),
+        .data_o({m_user_o, m_lit_o, m_dist_o, m_d_o, m_in_range_o, m_o_o, m_light_o, m_kind_o, m_last_o}));
+
+    generate
+        if (BITS < 12 || BITS > 32 || MAX_LIGHTS < 1 || USER_WIDTH < 1) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_spawn needs 12 <= BITS <= 32, MAX_LIGHTS >= 1, USER_WIDTH >= 1");
+                $finish;
+            end
+        end
+    endgenerate
+
+endmodule
+
+`default_nettype wire

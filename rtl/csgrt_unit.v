@@ -1,0 +1,174 @@
+`default_nettype none
+// csgrt_unit — unit vector, bit for bit unit_fx(v, FRAC, SQRT_STAGES) of
+// model/render.cpp (docs/numerics.md sections 2 and 6):
+//   L   = isqrt(sum v_i^2, SQRT_STAGES) + 1        (isqrt_bitwise, model/fixed.h)
+//   u_i = div(v_i << FRAC, L, FRAC + 1)            (sdiv_trunc: truncated toward zero)
+// |u_i| < 2^FRAC because L > |v|, so the division never overflows. root_o is
+// the square root itself, isqrt(sum v^2) = L - 1 (shadow_ray_fx's distance).
+// The caller guarantees sum v^2 < 4^SQRT_STAGES (the model throws otherwise).
+// v_i may carry any number of fraction bits: u has FRAC fraction bits.
+//
+// Pipeline (every register on ce_i, a valid bit alongside):
+//   M (2)            v_i^2, three csgrt_mul VW x VW
+//   S (1)            sum of squares (exact, then the low 2 SQRT_STAGES bits)
+//   Q (SQRT_STAGES)  csgrt_sqrt_core
+//   P (1)            L = root + 1, numerators v_i << FRAC
+//   D (FRAC+2)       three csgrt_div_core, FRAC+1 quotient bits (root rides along)
+//   O (1)            signed quotients
+// Latency: SQRT_STAGES + FRAC + 7 clocks, counted in enabled clocks
+// (unit_fx(., 15, 17): 39; unit_fx(., F, F+8) of the geometry: 2F+15).
+// Throughput: one vector per clock. Handshake: none (the enclosing
+// pipeline's global stall ce_i). Multipliers: 3 (VW x VW).
+// Users: csgrt_shade_unit (shading, FRAC 15, 17 stages), csgrt_spawn
+// (normals and secondary-ray directions, FRAC F, F+8 stages).
+module csgrt_unit #(
+    parameter VW          = 18,   // signed width of v_i (>= 2)
+    parameter FRAC        = 15,   // fraction bits of u (>= 1)
+    parameter SQRT_STAGES = 17,   // square-root stages: sum v^2 < 4^SQRT_STAGES (>= 2)
+    parameter USER_WIDTH  = 1     // sideband carried alongside (>= 1)
+) (
+    input  wire                    clk_i,
+    input  wire                    rst_ni,   // synchronous, active low (valid bits only)
+    input  wire                    ce_i,     // stage enable (low = stall)
+    input  wire                    valid_i,
+    input  wire [3*VW-1:0]         v_i,      // x, y, z (x low), two's complement
+    input  wire [USER_WIDTH-1:0]   user_i,
+    output wire                    valid_o,
+    output wire [3*(FRAC+2)-1:0]   u_o,      // FRAC fraction bits, FRAC+2 bits signed each
+    output wire [SQRT_STAGES-1:0]  root_o,   // isqrt(sum v^2), unsigned
+    output wire [USER_WIDTH-1:0]   user_o
+);
+
+    localparam SQ   = SQRT_STAGES;
+    localparam QB   = FRAC + 1;           // quotient bits
+    localparam UOW  = FRAC + 2;           // signed output width
+    localparam PW   = 2 * VW;             // square
+    localparam SUMW = (PW + 2 > 2 * SQ) ? PW + 2 : 2 * SQ;   // exact sum of three squares
+    localparam NUMW = VW + FRAC;          // v << FRAC
+    localparam DENW = SQ + 2;             // L <= 2^SQ, signed
+    localparam UW   = USER_WIDTH;
+    localparam MW   = UW + 3 * VW;        // sideband with v
+    localparam DUW  = UW + SQ;            // divider sideband: user, root
+
+    genvar i;
+
+    // ---- M: squares -----------------------------------------------------------
+    wire [3*PW-1:0] sq;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_sq
+            wire unused_v;
+            csgrt_mul #(.A_WIDTH(VW), .B_WIDTH(VW)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
+                .a_i(v_i[i*VW +: VW]), .b_i(v_i[i*VW +: VW]), .valid_o(unused_v), .p_o(sq[i*PW +: PW]));
+        end
+    endgenerate
+    wire          m_valid;
+    wire [MW-1:0] m_side;
+    csgrt_delay #(.WIDTH(MW), .STAGES(2)) u_dly_m (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
+        .data_i({user_i, v_i}), .valid_o(m_valid), .data_o(m_side));
+
+    // ---- S: sum (< 4^SQ by the caller's bound) ----------------------------------
+    // squares are non-negative: zero-extended
+    wire [SUMW-1:0] sum = {{(SUMW-PW){1'b0}}, sq[0 +: PW]} + {{(SUMW-PW){1'b0}}, sq[PW +: PW]}
+                        + {{(SUMW-PW){1'b0}}, sq[2*PW +: PW]};
+    reg            s_valid_q;
+    reg [2*SQ-1:0] s_n_q;
+    reg [MW-1:0]   s_side_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) s_valid_q <= 1'b0;
+        else if (ce_i) s_valid_q <= m_valid;
+        if (ce_i) begin
+            s_n_q    <= sum[2*SQ-1:0];
+            s_side_q <= m_side;
+        end
+    end
+    generate
+        if (SUMW > 2 * SQ) begin : g_sum_top
+            // zero by the caller's bound
+            wire unused_sum = ^sum[SUMW-1:2*SQ];
+        end
+    endgenerate
+
+    // ---- Q: square root ---------------------------------------------------------------
+    wire          q_valid;
+    wire [SQ-1:0] q_root;
+    wire [MW-1:0] q_side;
+    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(MW)) u_sqrt (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(s_valid_q),
+        .n_i(s_n_q), .user_i(s_side_q), .valid_o(q_valid), .root_o(q_root), .user_o(q_side));
+
+    // ---- P: L = root + 1, numerators ------------------------------------------------------
+    reg              p_valid_q;
+    reg [DENW-1:0]   p_len_q;
+    reg [3*NUMW-1:0] p_num_q;
+    reg [DUW-1:0]    p_user_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) p_valid_q <= 1'b0;
+        else if (ce_i) p_valid_q <= q_valid;
+        if (ce_i) begin
+            p_len_q  <= {2'b00, q_root} + {{(DENW-1){1'b0}}, 1'b1};
+            p_num_q  <= {q_side[2*VW +: VW], {FRAC{1'b0}}, q_side[VW +: VW], {FRAC{1'b0}},
+                         q_side[0 +: VW], {FRAC{1'b0}}};
+            p_user_q <= {q_root, q_side[3*VW +: UW]};
+        end
+    end
+
+    // ---- D: divisions --------------------------------------------------------------------
+    wire            d_valid;
+    wire [3*QB-1:0] d_mag;
+    wire [2:0]      d_neg, d_ovf;
+    wire [DUW-1:0]  d_user;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_div
+            if (i == 0) begin : g_main
+                csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(DUW)) u_div (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(p_valid_q),
+                    .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(p_user_q),
+                    .valid_o(d_valid), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
+                    .user_o(d_user));
+            end else begin : g_other
+                wire unused_v, unused_u;
+                csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(p_valid_q),
+                    .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(1'b0),
+                    .valid_o(unused_v), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
+                    .user_o(unused_u));
+            end
+        end
+    endgenerate
+    // |v_i| < L: never overflows
+    wire unused_ovf = ^d_ovf;
+
+    // ---- O: signed output -----------------------------------------------------------------
+    reg             o_valid_q;
+    reg [3*UOW-1:0] o_u_q;
+    reg [DUW-1:0]   o_user_q;
+    integer k;
+    always @(posedge clk_i) begin
+        if (!rst_ni) o_valid_q <= 1'b0;
+        else if (ce_i) o_valid_q <= d_valid;
+        if (ce_i) begin
+            for (k = 0; k < 3; k = k + 1)
+                o_u_q[k*UOW +: UOW] <= d_neg[k] ? {UOW{1'b0}} - {1'b0, d_mag[k*QB +: QB]}
+                                                : {1'b0, d_mag[k*QB +: QB]};
+            o_user_q <= d_user;
+        end
+    end
+    assign valid_o = o_valid_q;
+    assign u_o     = o_u_q;
+    assign user_o  = o_user_q[0 +: UW];
+    assign root_o  = o_user_q[UW +: SQ];
+
+    generate
+        if (VW < 2 || FRAC < 1 || SQRT_STAGES < 2 || USER_WIDTH < 1) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_unit needs VW >= 2, FRAC >= 1, SQRT_STAGES >= 2, USER_WIDTH >= 1");
+                $finish;
+            end
+        end
+    endgenerate
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# bench_effects.sh — `make bench-effects`: each effect scene simulated on the
+# build with only the effect units it uses and on the full build
+# (EFFECTS=all): simulation wall time (median of RUNS), cycles, whether the
+# two images are identical, and the Yosys cell count of each build
+# (csgrt_top after proc/opt/memory/techmap: generic cells, no FPGA mapping).
+# A benchmark, not a test: it prints figures.
+#
+#   tools/bench_effects.sh [--width W] [--height H] [--bits B] [--runs N] [--no-yosys] [SCENE...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+W=64; H=48; BITS=24; RUNS=3; YOSYS=1
+SCENES=()
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --width) W=$2; shift 2 ;;
+        --height) H=$2; shift 2 ;;
+        --bits) BITS=$2; shift 2 ;;
+        --runs) RUNS=$2; shift 2 ;;
+        --no-yosys) YOSYS=0; shift ;;
+        -h|--help) sed -n 2,9p "$0"; exit 0 ;;
+        *) SCENES+=("$1"); shift ;;
+    esac
+done
+[ ${#SCENES[@]} -gt 0 ] || SCENES=(scenes/quadrics.pov scenes/basic.pov scenes/mirror.pov scenes/paper/fig08_reflect.pov)
+
+make --no-print-directory model >/dev/null
+OUT=out/bench-effects
+mkdir -p "$OUT"
+
+sim_bin() { echo "build/sim/b${BITS}u1s$1r$2/csgrt_sim"; }
+build() {   # shadows reflection
+    make --no-print-directory "$(sim_bin "$1" "$2")" BITS="$BITS" UNITS=1 SHADOWS="$1" REFLECTION="$2" >&2
+}
+
+# cells of csgrt_top in a build (cached per configuration)
+cells() {   # shadows reflection
+    local f="$OUT/cells_b${BITS}s$1r$2.txt"
+    if [ ! -s "$f" ]; then
+        echo "bench-effects: yosys cell count for SHADOWS=$1 REFLECTION=$2 (a few minutes)" >&2
+        yosys -q -p "read_verilog -Irtl rtl/csgrt_*.v; chparam -set BITS $BITS -set SHADOWS $1 -set REFLECTION $2 csgrt_top; \
+                     hierarchy -top csgrt_top; proc; flatten; opt -fast; memory -nomap; opt_clean; techmap; opt -fast; \
+                     tee -o $f stat" >/dev/null 2>&1 || { echo "?" > "$f"; }
+    fi
+    grep -m1 "Number of cells" "$f" | awk '{print $NF}' || echo "?"
+}
+
+median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+
+run() {   # bin scene out -> "seconds cycles"
+    local bin=$1 scene=$2 out=$3 name
+    name=$(basename "$scene" .pov)
+    build/csgrt compile "$scene" -o "$OUT/$name.bin" --bits "$BITS" --width "$W" --height "$H" \
+        --max-leaves 64 --tree-height 8 2>/dev/null
+    local times=() cycles=""
+    for _ in $(seq "$RUNS"); do
+        local log
+        log=$("$bin" --scene-image "$OUT/$name.bin" --out "$out" --no-compare 2>/dev/null)
+        times+=("$(echo "$log" | awk '/simulation wall time/ {print $4}')")
+        cycles=$(echo "$log" | awk '/cycles per frame/ {print $4}')
+    done
+    echo "$(printf '%s\n' "${times[@]}" | median) $cycles"
+}
+
+printf "%-22s %-9s %10s %10s %10s %10s %8s %10s %10s %s\n" scene units "spec s" "full s" "full/spec" \
+    "cycles" "" "cells" "cells all" "images"
+for scene in "${SCENES[@]}"; do
+    name=$(basename "$scene" .pov)
+    read -r S R < <(build/csgrt units "$scene" 2>/dev/null | sed 's/SHADOWS=\([01]\) REFLECTION=\([01]\)/\1 \2/')
+    build "$S" "$R"; build 1 1
+    read -r ts cs < <(run "$(sim_bin "$S" "$R")" "$scene" "$OUT/${name}_spec.png")
+    read -r tf cf < <(run "$(sim_bin 1 1)" "$scene" "$OUT/${name}_all.png")
+    if idiff -fail 0 -warn 0 "$OUT/${name}_spec.png" "$OUT/${name}_all.png" >/dev/null 2>&1; then
+        same=identical
+    else
+        same=DIFFER
+    fi
+    if [ "$YOSYS" = 1 ]; then c1=$(cells "$S" "$R"); c2=$(cells 1 1); else c1=-; c2=-; fi
+    ratio=$(awk -v a="$tf" -v b="$ts" 'BEGIN { printf "%.2f", (b > 0) ? a / b : 0 }')
+    printf "%-22s s%sr%s %12s %10s %10s %10s %8s %10s %10s %s\n" "$name" "$S" "$R" "$ts" "$tf" "${ratio}x" "$cs" \
+        "$([ "$cs" = "$cf" ] && echo "" || echo "($cf)")" "$c1" "$c2" "$same"
+done
+echo "spec: the build with the scene's units (csgrt units); full: SHADOWS=1 REFLECTION=1; ${W}x${H}, BITS=$BITS, median of $RUNS"
