@@ -127,6 +127,9 @@ $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.c
 
 sim: model
 	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0,$$($(BUILD)/csgrt units $(SCENE))))" \
+	    && if [ "$(UNITS)" != 1 ] && [ "$$units" != "SHADOWS=0 REFLECTION=0" ]; then \
+	        echo "make sim: the effect units work with one intersection lane for now: UNITS=$(UNITS) builds primary rays only"; \
+	        units="SHADOWS=0 REFLECTION=0"; fi \
 	    && echo "make sim: effect units $$units (EFFECTS=$(EFFECTS))" \
 	    && $(MAKE) --no-print-directory sim-run $$units
 

@@ -1,7 +1,8 @@
 `default_nettype none
 // csgrt_event_sort — collects one ray's leaf results (csgrt_isect) and sorts
 // the events ahead of the origin; computes the origin flags. Matches the
-// primary-ray branch of trace_generic() in model/trace.cpp and the key of
+// primary-ray branch of trace_generic() in model/trace.cpp (with SECONDARY
+// = 1 also its secondary-ray branch, see below) and the key of
 // event_before() (docs/numerics.md section 4).
 //
 // Per leaf result (one transaction, valid/ready):

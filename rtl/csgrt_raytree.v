@@ -389,9 +389,16 @@ module csgrt_raytree #(
     // ---- state updates ---------------------------------------------------------------------
     // entry idx of a context's stack
     localparam STK_AW = $clog2(P * MAX_DEPTH);
+    // (32-bit arithmetic, the entry index in its low STK_AW bits: the rest is 0)
+    /* verilator lint_off UNUSEDSIGNAL */
     function [STK_AW-1:0] stk(input [CB-1:0] ctx, input [SPW-1:0] idx);
-        stk = STK_AW'(ctx) * STK_AW'(MAX_DEPTH) + STK_AW'(idx);
+        reg [31:0] a;
+        begin
+            a = ctx * MAX_DEPTH + {{(32-SPW){1'b0}}, idx};
+            stk = a[STK_AW-1:0];
+        end
     endfunction
+    /* verilator lint_on UNUSEDSIGNAL */
     wire [SW-1:0] pop_entry = stack_q[stk(pop_ctx, sp_q[pop_ctx] - 1'b1)];
 
     wire [38:0] acc_ct = add_sat(acc_q[ct_ctx], ct_contrib);

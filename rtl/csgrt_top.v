@@ -456,6 +456,15 @@ module csgrt_top #(
         end
     endgenerate
 
+    generate
+        if (EFFECTS && NUM_UNITS > 1) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: the effect units (SHADOWS, REFLECTION) need NUM_UNITS = 1 for now");
+                $finish;
+            end
+        end
+    endgenerate
+
     // ---------------------------------------------------- frame and statistics
     reg [63:0] pairs_now;   // pairs handed to the lanes in this clock
     integer u;

@@ -10,11 +10,13 @@
 // record per ray, in ray order (see csgrt_walker). Latency and throughput:
 // event_sort (leaf -> fill bank 2 clocks, handover 1) plus the walker
 // (load 1, one event per clock, TREE_HEIGHT tree stages, output skid 1).
-// Both sides valid/ready; ready_o and valid_o are registers' functions.
+// Both sides valid/ready; ready_o and valid_o are registers' functions
+// (with SECONDARY = 1 ready_o also depends on info_valid_i).
 //
 // Secondary rays (SECONDARY = 1; SECONDARY = 0 builds none of it, ties
 // info_ready_o and the new outputs to 0 and ignores the new inputs; same
-// latency and throughput either way). Matches trace_secondary_fx() too:
+// latency and throughput either way). Matches trace_secondary_fx() too
+// (TraceOptions::t_limit_fx; no look-ahead):
 //   cpos_i             per leaf result: c > 0 (csgrt_isect's c_o > 0)
 //   info_*             one record per ray (primary or secondary), read with
 //                      every leaf of the ray: it must be valid when the

@@ -33,7 +33,9 @@
 //                  docs/effects.md: behind a transparent hit, cross the
 //                  following coincident surfaces too; the hit then reads
 //                  BORDER a1,an) is not implemented; flags_after_o and
-//                  from_o/to_o ignore it until it is.
+//                  from_o/to_o ignore it until it is. (Formed from the
+//                  output registers; with the look-ahead it must be
+//                  carried in the record instead.)
 //   lb_count_o     0..LOOK_BEHIND: the look-behind run, the valid (non-skip)
 //   lb_slot_o      tokens of the ray issued before the hit token, most
 //   lb_entering_o  recent first (TraceResult::near_run): entry k's slot at
@@ -51,11 +53,10 @@
 // Latency: a ray loaded at edge k issues its i-th event (i = 0, 1, ..) at
 // edge k+1+i (into the tree's first register); the tree's result is there
 // after edge k+i+TREE_HEIGHT and the record on valid_o (csgrt_skid) after
-// edge k+i+TREE_HEIGHT+1 (the same with SECONDARY = 1). Throughput: one
-// event per clock; per ray
-// max(1, issued events) + 2 clocks with event_sort (release -> next ray
-// loaded), issued events = all of them on a miss, at most
-// hit index + TREE_HEIGHT + 1 on a hit.
+// edge k+i+TREE_HEIGHT+1, the same with SECONDARY = 1. Throughput: one
+// event per clock; per ray max(1, issued events) + 2 clocks with event_sort
+// (release -> next ray loaded), issued events = all of them on a miss, at
+// most hit index + TREE_HEIGHT + 1 on a hit; the same with SECONDARY = 1.
 // Handshake: valid/ready out through csgrt_skid; when a result is due and
 // the skid cannot take it the whole walker (tree included) stalls. No
 // combinational path from ready_i to ev_pop_o / ray_done_o.

@@ -454,7 +454,8 @@ TEST(Walk, BackToBack) { throughput<P24>(); }
 //   far side   the parent's direction, flags_after, no run, no limit;
 //   random run the reflected ray with flags_hit_near and a random run on
 //              the hit's and the run's leaves (repeated slots: the order of
-//              the fix-up's writes), flags = that run applied as specified;
+//              the fix-up's writes), flags = that run applied as specified,
+//              mostly a t limit equal to (or 1 ulp past) an event's t;
 // and compared with trace_secondary_fx(cs, child, parent.flags_before (the
 // random run: its own fix-up) or flags_after, ties, true, {t_limit}): hit,
 // t, leaf, slot, entering, from, to, flags_before (= the model's
@@ -481,6 +482,7 @@ struct SecCase {
     int undone = 0, undone_by_c = 0;
     bool fixup_changes = false;
     bool undone_twice = false;   // two undone entries of one slot whose order matters
+    bool limit_on_event = false; // the t limit equals the t of an event ahead
 };
 const char* const kKind[] = {"primary", "reflected", "shadow", "far side", "random run"};
 
@@ -618,7 +620,7 @@ std::vector<SecCase> make_sec_cases(const CompiledScene& cs, TiePolicy ties, int
         // kind 1, 2: near side with the parent's run; 3: far side; 4: near
         // side with a random run (entries on the hit's and the run's leaves,
         // slots repeated, random senses and same-t bits)
-        auto add = [&](int kind, const std::array<i64, 3>& d, i64 t_limit) {
+        auto add = [&](int kind, const std::array<i64, 3>& d, i64 t_limit) {   // t_limit: 0 none
             SecCase c;
             garbage(c);   // unused slots and run entries past the count stay random
             c.kind = kind;
@@ -638,6 +640,17 @@ std::vector<SecCase> make_sec_cases(const CompiledScene& cs, TiePolicy ties, int
             std::vector<Event<i64>> run;
             std::vector<bool> same;
             if (kind == 4) {
+                // a t limit on one of the ray's events ahead, or just past it
+                std::vector<i64> ts;
+                for (const LeafEvents<i64>& le : c.le)
+                    for (int e = 0; e < le.count; ++e)
+                        if (le.ev[e].range == TRange::Finite && le.ev[e].t > 0) ts.push_back(le.ev[e].t);
+                if (!ts.empty() && rng() % 4) {
+                    t_limit = ts[rng() % ts.size()] + i64(rng() % 3 == 0);
+                    c.limit_on_event = std::count(ts.begin(), ts.end(), t_limit) > 0;
+                }
+                opt.t_limit_fx = t_limit;
+                c.tlimit = t_limit < (i64(1) << (F + 1)) ? uint64_t(t_limit) : 0;
                 std::vector<int> pool{pt.leaf, int(rng() % n)};
                 for (const Event<i64>& b : pt.near_run) pool.push_back(b.leaf);
                 const int two[2] = {pool[rng() % pool.size()], pool[rng() % pool.size()]};
@@ -684,7 +697,10 @@ std::vector<SecCase> make_sec_cases(const CompiledScene& cs, TiePolicy ties, int
                 ADD_FAILURE() << "look-behind from the child's c differs from the model's flags_before";
             c.fixup_changes = fixed != in;
             try {
-                c.want = trace_secondary_fx(cs, c.ray, fixed, ties, true, opt);
+                // the model's flags: parent.flags_before (near side), flags_after
+                // (far side), or the random run's fix-up
+                c.want = trace_secondary_fx(cs, c.ray, (kind == 1 || kind == 2) ? pt.flags_before : fixed, ties,
+                                            true, opt);
             } catch (const std::logic_error&) {
                 return;
             }
@@ -709,7 +725,7 @@ std::vector<SecCase> make_sec_cases(const CompiledScene& cs, TiePolicy ties, int
 struct SecStats {
     // undo*: the parent's own runs (kinds 1, 2); random: kind 4
     uint64_t rays[5] = {}, hits[5] = {}, undo = 0, undo_by_c = 0, undo_changes = 0, limited = 0;
-    uint64_t random_undo = 0, random_twice = 0;
+    uint64_t random_undo = 0, random_twice = 0, limit_on_event = 0;
     uint64_t cycles = 0, leaves = 0, events = 0, popped = 0, info_stalls = 0;
 };
 
@@ -908,6 +924,7 @@ void run_sec(const Scenario& sc, TiePolicy ties, const std::vector<SecCase>& ray
         st.undo_changes += own && c.fixup_changes;
         st.random_undo += c.kind == 4 && c.undone > 0;
         st.random_twice += c.kind == 4 && c.undone_twice;
+        st.limit_on_event += c.limit_on_event;
         st.limited += c.kind == 2 && c.tlimit != 0;
         st.events += c.want.events.size();
     }
@@ -926,7 +943,7 @@ void run_sec(const Scenario& sc, TiePolicy ties, const std::vector<SecCase>& ray
 template <class S>
 void run_sec_all(uint64_t seed) {
     const std::vector<Scenario> scs = sec_scenarios(S::kBits);
-    uint64_t undo_total = 0, undo_by_c_total = 0, twice_total = 0;
+    uint64_t undo_total = 0, undo_by_c_total = 0, twice_total = 0, limit_total = 0;
     for (TiePolicy ties : {TiePolicy::Paper, TiePolicy::Regular}) {
         SecStats st;
         for (const Scenario& sc : scs) {
@@ -937,8 +954,8 @@ void run_sec_all(uint64_t seed) {
                     "shadow %llu (%llu; %llu with a t limit), far side %llu (%llu), random run %llu (%llu); "
                     "reflected and shadow rays with a non-empty look-behind undo %llu (decided by c, not same "
                     "t: %llu; flags changed: %llu); random runs with an undo %llu (a slot undone twice, order "
-                    "matters: %llu); %llu leaf results, %llu events ahead (%llu popped), %llu cycles (%llu leaf "
-                    "stalls on the info stream)\n",
+                    "matters: %llu; a t limit on an event: %llu); %llu leaf results, %llu events ahead (%llu "
+                    "popped), %llu cycles (%llu leaf stalls on the info stream)\n",
                     S::kBits, ties == TiePolicy::Paper ? "paper" : "regular", scs.size(),
                     (unsigned long long)st.rays[0], (unsigned long long)st.hits[0], (unsigned long long)st.rays[1],
                     (unsigned long long)st.hits[1], (unsigned long long)st.rays[2], (unsigned long long)st.hits[2],
@@ -946,18 +963,21 @@ void run_sec_all(uint64_t seed) {
                     (unsigned long long)st.rays[4], (unsigned long long)st.hits[4], (unsigned long long)st.undo,
                     (unsigned long long)st.undo_by_c, (unsigned long long)st.undo_changes,
                     (unsigned long long)st.random_undo, (unsigned long long)st.random_twice,
+                    (unsigned long long)st.limit_on_event,
                     (unsigned long long)st.leaves,
                     (unsigned long long)st.events, (unsigned long long)st.popped, (unsigned long long)st.cycles,
                     (unsigned long long)st.info_stalls);
         undo_total += st.undo;
         undo_by_c_total += st.undo_by_c;
         twice_total += st.random_twice;
+        limit_total += st.limit_on_event;
     }
     // the look-behind must actually fire, also where c decides and where
     // the order of the writes matters, or the test proves nothing
     EXPECT_GT(undo_total, 0u);
     EXPECT_GT(undo_by_c_total, 0u);
     EXPECT_GT(twice_total, 0u);
+    EXPECT_GT(limit_total, 0u);
 }
 
 TEST(WalkSecondary, Bits16) { run_sec_all<S16>(tb::seed(1610)); }
