@@ -33,8 +33,9 @@
 //                  (the low B bits of p when out of range)
 //   m_in_range_o   hit_point_fx's return: every p_i in [-4, 4). When 0 the hit
 //                  counts as no hit (trace_colour_fx returns the background):
-//                  the children still come out, but their m_d_o, m_dist_o and
-//                  m_lit_o are meaningless
+//                  the children still come out (same count, kinds and order),
+//                  but their m_d_o (except CONTINUE's), m_dist_o, m_lit_o and
+//                  the choice between REFRACT and TIR_REFLECT are meaningless
 //   m_d_o          3 x B, F frac: CONTINUE the ray's d unchanged; SHADOW
 //                  shadow_ray_fx's direction unit_fx(light - p, F, F+8);
 //                  REFRACT refract_fx's direction; TIR_REFLECT and REFLECT
@@ -52,7 +53,7 @@
 // ---- Arithmetic (every rounding; rnd(x, k) = (x + 2^(k-1)) >> k, ties up) ----
 //   p_i   = o_i + rnd(t d_i, F)                          hit_point_fx (trace.cpp)
 //   g_i   = rnd(sum_j A_ij p_j + (P_i << F), FC)         half_gradient_fx (trace.cpp), |g| < 16
-//   n     = unit(g): isqrt(sum g^2, F+8) + 1, div(g_i << F, L, F+1)
+//   n     = unit(g): L = isqrt(sum g^2, F+8) + 1, n_i = div(g_i << F, L, F+1)
 //                                                        unit_fx (render.cpp), normal_fx
 //   n     = -n if n . d > 0 (exact sign)                 face_against (trace.cpp)
 //   dn    = rnd(d . n, F)                                dot_round (render.cpp)
@@ -63,11 +64,13 @@
 //   r_i   = d_i - rnd(2 dn n_i, F) (= rnd(dn n_i, F-1)), unit(r)   reflect_fx (raytree.cpp)
 //   lv    = light - p, unit(lv), distance isqrt(|lv|^2)  shadow_ray_fx (raytree.cpp)
 //   lit   = n . lv > 0 (exact)                           trace_colour_fx (raytree.cpp)
-// unit() is csgrt_unit (FRAC F, F+8 square-root stages, |v_i| < 128 as the
-// model requires: it throws otherwise). Widths: p B+1 bits before the range
-// check, g B+2, n F+1, dn/cos/sin2 F+2, eta F+8 (F+7 magnitude bits), eta^2
-// rounded F+15, k F+16, a F+8, lv B+1, r B+1, t F+9 summed and F+8 into the
-// unit. Every product is exact (csgrt_mul), every sum exact at its width.
+// unit() is unit_fx(v, F, F+8) (|v_i| < 128 as the model requires: it throws
+// otherwise): csgrt_unit for the children, spread over three clocks for the
+// normal. isqrt is isqrt_bitwise, div sdiv_trunc (model/fixed.h).
+// Widths: p B+1 bits before the range check, g B+2, n F+1, dn/cos/sin2 F+2,
+// eta F+8 (F+7 magnitude bits), eta^2 rounded F+15, k F+16, a F+8, lv B+1,
+// r B+1, t F+9 summed and F+8 into the unit. Every product is exact
+// (csgrt_mul), every sum exact at its width.
 //
 // ---- Structure ---------------------------------------------------------------
 // Front (per hit, free running: it never stalls; a hit is admitted at most
@@ -78,8 +81,11 @@
 //   P    (1)        p_j = o_j + rnd(t d_j, F), range check
 //   G    (2)        A_ij p_j (column j)        3 multipliers, shared by the 3 columns
 //   ACC  (1)        g_i accumulated column by column (+ P_i << F, + rounding)
-//   U1   (2F+15)    n = unit(g)                csgrt_unit #1, 3 multipliers
-//   ND   (3+2+1)    n_j d_j, phase by phase    1 multiplier; accumulate n . d
+//   N    (2F+20)    n = unit(g), csgrt_unit's stages with one axis per clock:
+//                   g_j^2 (3+2+1, 1 multiplier), isqrt (F+8, csgrt_sqrt_core),
+//                   L = root + 1 held (3), div(g_j << F, L) (F+2, one
+//                   csgrt_div_core), n_j signed (1)
+//   FD   (2+1)      n_j d_j as n_j comes out   1 multiplier; accumulate n . d
 //   NDA  (1)        face: flip n, d.n when n . d > 0
 //   NDB  (1)        dn = rnd(d.n, F), cos = -dn
 //   S1   (2)        cos^2, eta cos             2 multipliers
@@ -91,8 +97,9 @@
 //   eta, beside H..S1: div(ior_from << F, ior_to) (csgrt_div_core, F+8),
 //   eta^2 (1 multiplier, 2), rnd (0) into queues.
 // Per-hit values wait in small queues (csgrt_fifo, LUT RAM) instead of
-// riding along the pipelines: {d, flags, user}, {d} (for ND), {p, in_range},
-// {eta, eta2}, {eta}, {n, dn}, {rnd(eta cos)}, {a, TIR}.
+// riding along the pipelines: {d, flags, user}, {d} (for FD), {p, in_range},
+// {g} (for the divisions), {eta, eta2}, {eta}, {n, dn}, {rnd(eta cos)},
+// {a, TIR}.
 // Children (one global enable, the output skid buffer's registered ready):
 //   SEQ             the hit register and its pending children, lowest first;
 //                   the next hit is loaded as the last child leaves
@@ -104,20 +111,28 @@
 //                   shared by every child (its root is the shadow distance)
 //   skid (1)        output; p, d, in_range and user from the hit's queue
 //                   entry (written at SEQ load, read by the hit's last child)
-// Multipliers: 21 csgrt_mul: T 1 ((F+2) x B), G 3 (B x B), U1 3 ((B+2)^2),
-// ND 1 ((F+1) x B), eta^2 1 ((F+8)^2), S1 2 ((F+2)^2, (F+8) x (F+2)),
+// Multipliers: 19 csgrt_mul: T 1 ((F+2) x B), G 3 (B x B), N 1 ((B+2)^2),
+// FD 1 ((F+1) x B), eta^2 1 ((F+8)^2), S1 2 ((F+2)^2, (F+8) x (F+2)),
 // S3 1 ((F+15) x (F+2)), X 3 ((F+8) x (B+1)), Y 3 ((F+8) x (F+1)),
-// U2 3 ((F+8)^2).
+// U2 3 ((F+8)^2). Dividers: 5 csgrt_div_core (eta, N, U2 x 3); square
+// roots: 3 csgrt_sqrt_core (N, S5, U2). Shared: T, G, N and FD serve the
+// three axes in turn (a hit every third clock); X, Y and U2 serve every
+// child kind (U2's square root is also the shadow distance).
+// yosys 0.23 synth_ecp5 of this module alone, MAX_LIGHTS 8, USER_WIDTH 1:
+//   BITS 16: MULT18X18D 39, LUT4 18.2k + CCU2C 3.4k, FF 11.4k, DPR16X4 246
+//   BITS 24: MULT18X18D 76, LUT4 39.7k + CCU2C 6.7k, FF 20.3k, DPR16X4 354
+// (the five csgrt_div_cores take most of the LUTs: ~2.8k LUT4 each at 16).
 //
 // ---- Timing --------------------------------------------------------------------
-// Latency (no back-pressure, idle front): 5F+61 clocks from a hit's
-// acceptance to its first child (BITS 12: 106, 16: 126, 24: 166, 32: 206).
+// Latency (no back-pressure, idle front): 5F+63 clocks from a hit's
+// acceptance to its first child (BITS 12: 108, 16: 128, 24: 168, 32: 208).
 // Throughput: one child per clock while hits are waiting at the sequencer:
 // a hit's children leave on consecutive clocks and the next hit's first
 // child follows its predecessor's last without a gap. The front accepts a
-// hit every third clock at most (hits with fewer than three children then
-// leave gaps), and at most 32 hits between input and sequencer and 32 hits
-// between sequencer and output (single-child hits in bursts).
+// hit every third clock at most, and holds each of its 32 credits for 3F+43
+// clocks: back to back, a hit every max(3, (3F+43)/32) clocks (BITS 12, 16:
+// 3; 24: 3.3; 32: 4.1), so hits with fewer children than that leave gaps.
+// At most 32 hits wait between sequencer and output (their p, d, user).
 // Handshake: valid/ready on both sides. s_ready_o depends only on registers
 // (the front's phase and hit count); the child pipeline advances on the
 // output skid buffer's registered ready; no combinational path from
@@ -252,7 +267,7 @@ module csgrt_spawn #(
         end
     end
 
-    // the hit's d, flags and user wait for the sequencer; d also for ND
+    // the hit's d, flags and user wait for the sequencer; d also for FD
     localparam QHW = 3 * B + FLW + UW;
     wire [FLW-1:0] s_flags = {s_reflect_i, s_refract_i, s_lights_i, s_continue_i};
     wire [QHW-1:0] qh_data;
@@ -393,57 +408,156 @@ module csgrt_spawn #(
         end
     endgenerate
 
-    // ---- U1: n = unit(g) --------------------------------------------------------------
-    wire             u1_valid;
-    wire [3*UOW-1:0] u1_u;
-    wire [SQ-1:0]    unused_u1_root;
-    wire             unused_u1_user;
-    csgrt_unit #(.VW(GW), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(1)) u_unit_n (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(acc_done_q),
-        .v_i(g_vec), .user_i(1'b0),
-        .valid_o(u1_valid), .u_o(u1_u), .root_o(unused_u1_root), .user_o(unused_u1_user));
-    wire [3*NW-1:0] u1_n = {u1_u[2*UOW +: NW], u1_u[UOW +: NW], u1_u[0 +: NW]};
-    // |n_i| < 2^F: the top bit is a sign copy
-    wire unused_u1_top = ^{u1_u[3*UOW-1], u1_u[2*UOW-1], u1_u[UOW-1]};
-
-    // ---- ND: n . d, one axis per clock --------------------------------------------------
-    reg            nh_valid_q;
-    reg [1:0]      nh_ph_q;
-    reg [3*NW-1:0] nh_n_q, nh2_n_q;
+    // ---- N: n = unit(g), one axis per clock (unit_fx(g, F, F+8)) -------------------------
+    // csgrt_unit's pipeline with its squares and divisions spread over three
+    // clocks (hits are at least three clocks apart): 1 multiplier, 1 divider.
+    //   NS  (3+2+1)  g_j^2, summed
+    //   NQ  (F+8)    root = isqrt(sum g^2)
+    //   NP  (3)      L = root + 1 held, g_j << F from the queue
+    //   ND  (F+2)    n_j = div(g_j << F, L, F+1)
+    //   NO  (1)      n_j signed
+    reg            gh_valid_q;
+    reg [1:0]      gh_ph_q;
+    reg [3*GW-1:0] gh_g_q;
     always @(posedge clk_i) begin
         if (!rst_ni) begin
-            nh_valid_q <= 1'b0;
-            nh_ph_q    <= 2'd0;
-        end else if (u1_valid) begin
-            nh_valid_q <= 1'b1;
-            nh_ph_q    <= 2'd0;
-        end else if (nh_valid_q) begin
-            nh_ph_q <= nh_ph_q + 2'd1;
-            if (nh_ph_q == 2'd2) nh_valid_q <= 1'b0;
+            gh_valid_q <= 1'b0;
+            gh_ph_q    <= 2'd0;
+        end else if (acc_done_q) begin
+            gh_valid_q <= 1'b1;
+            gh_ph_q    <= 2'd0;
+        end else if (gh_valid_q) begin
+            gh_ph_q <= gh_ph_q + 2'd1;
+            if (gh_ph_q == 2'd2) gh_valid_q <= 1'b0;
         end
-        if (u1_valid) nh_n_q <= u1_n;
-        if (nh_valid_q && nh_ph_q == 2'd2) nh2_n_q <= nh_n_q;   // kept for the flip
+        if (acc_done_q) gh_g_q <= g_vec;
     end
-    assign qnd_pop = nh_valid_q && (nh_ph_q == 2'd2);
-    reg [NW-1:0] nh_nj;
-    reg [B-1:0]  nh_dj;
+    reg [GW-1:0] gh_gj;
     always @* begin
-        case (nh_ph_q)
-            2'd0:    begin nh_nj = nh_n_q[0 +: NW];    nh_dj = qnd_d[0 +: B];   end
-            2'd1:    begin nh_nj = nh_n_q[NW +: NW];   nh_dj = qnd_d[B +: B];   end
-            default: begin nh_nj = nh_n_q[2*NW +: NW]; nh_dj = qnd_d[2*B +: B]; end
+        case (gh_ph_q)
+            2'd0:    gh_gj = gh_g_q[0 +: GW];
+            2'd1:    gh_gj = gh_g_q[GW +: GW];
+            default: gh_gj = gh_g_q[2*GW +: GW];
+        endcase
+    end
+    // g waits for L in a queue
+    wire [3*GW-1:0] qg_g;
+    wire            qg_pop;
+    wire            unused_qg_ready, unused_qg_valid;
+    csgrt_fifo #(.WIDTH(3 * GW), .DEPTH(CTX)) u_q_g (
+        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(acc_done_q), .ready_o(unused_qg_ready),
+        .data_i(g_vec), .valid_o(unused_qg_valid), .ready_i(qg_pop), .data_o(qg_g));
+
+    // NS: the sum of squares (< 3 * 16^2 * 2^(2F) < 4^SQ)
+    localparam GGW = 2 * GW;
+    wire [GGW-1:0] ggp;
+    wire           unused_gg_v;
+    csgrt_mul #(.A_WIDTH(GW), .B_WIDTH(GW)) u_mul_gg (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(gh_valid_q),
+        .a_i(gh_gj), .b_i(gh_gj), .valid_o(unused_gg_v), .p_o(ggp));
+    wire       gg_valid;
+    wire [1:0] gg_col;
+    csgrt_delay #(.WIDTH(2), .STAGES(2)) u_dly_gg (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(gh_valid_q),
+        .data_i(gh_ph_q), .valid_o(gg_valid), .data_o(gg_col));
+    reg [2*SQ-1:0] gs_q;
+    reg            gs_done_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) gs_done_q <= 1'b0;
+        else gs_done_q <= gg_valid && (gg_col == 2'd2);
+        // a square is not negative: zero-extended
+        if (gg_valid)
+            gs_q <= ((gg_col == 2'd0) ? {(2*SQ){1'b0}} : gs_q) + {{(2*SQ-GGW){1'b0}}, ggp};
+    end
+
+    // NQ: root = isqrt(sum g^2)
+    wire          nq_valid;
+    wire [SQ-1:0] nq_root;
+    wire          unused_nq_user;
+    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(1)) u_sqrt_n (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(gs_done_q),
+        .n_i(gs_q), .user_i(1'b0), .valid_o(nq_valid), .root_o(nq_root), .user_o(unused_nq_user));
+
+    // NP: L = root + 1 for three clocks; numerator g_j << F
+    localparam NLW = SQ + 2;         // L <= 2^SQ, signed
+    localparam NNW = GW + F;         // g << F
+    reg           lh_valid_q;
+    reg [1:0]     lh_ph_q;
+    reg [NLW-1:0] lh_len_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            lh_valid_q <= 1'b0;
+            lh_ph_q    <= 2'd0;
+        end else if (nq_valid) begin
+            lh_valid_q <= 1'b1;
+            lh_ph_q    <= 2'd0;
+        end else if (lh_valid_q) begin
+            lh_ph_q <= lh_ph_q + 2'd1;
+            if (lh_ph_q == 2'd2) lh_valid_q <= 1'b0;
+        end
+        if (nq_valid) lh_len_q <= {2'b00, nq_root} + {{(NLW-1){1'b0}}, 1'b1};
+    end
+    assign qg_pop = lh_valid_q && (lh_ph_q == 2'd2);
+    reg [GW-1:0] lh_gj;
+    always @* begin
+        case (lh_ph_q)
+            2'd0:    lh_gj = qg_g[0 +: GW];
+            2'd1:    lh_gj = qg_g[GW +: GW];
+            default: lh_gj = qg_g[2*GW +: GW];
+        endcase
+    end
+
+    // ND: n_j = div(g_j << F, L, F+1), never overflows (|g_j| < L)
+    wire          nd_dvalid, unused_nd_ovf;
+    wire [F:0]    nd_mag;
+    wire          nd_neg;
+    wire [1:0]    nd_dph;
+    csgrt_div_core #(.NUM_WIDTH(NNW), .DEN_WIDTH(NLW), .QUOT_BITS(F + 1), .USER_WIDTH(2)) u_div_n (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(lh_valid_q),
+        .num_i({lh_gj, {F{1'b0}}}), .den_i(lh_len_q), .user_i(lh_ph_q),
+        .valid_o(nd_dvalid), .quot_o(nd_mag), .neg_o(nd_neg), .ovf_o(unused_nd_ovf), .user_o(nd_dph));
+    // |n_j| < 2^F: the top quotient bit is zero
+    wire          unused_nd_top = nd_mag[F];
+
+    // NO: n_j signed
+    reg           no_valid_q;
+    reg [1:0]     no_ph_q;
+    reg [NW-1:0]  no_n_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) no_valid_q <= 1'b0;
+        else no_valid_q <= nd_dvalid;
+        no_ph_q <= nd_dph;
+        no_n_q  <= nd_neg ? {NW{1'b0}} - {1'b0, nd_mag[F-1:0]} : {1'b0, nd_mag[F-1:0]};
+    end
+
+    // ---- FD: n . d, one axis per clock, as n_j comes out ------------------------------
+    // the whole n, kept for the flip: n_0, n_1 collected, n_2 joins them
+    reg [2*NW-1:0] nc_n_q;
+    reg [3*NW-1:0] nh2_n_q;
+    always @(posedge clk_i) begin
+        if (no_valid_q && no_ph_q == 2'd0) nc_n_q[0 +: NW]  <= no_n_q;
+        if (no_valid_q && no_ph_q == 2'd1) nc_n_q[NW +: NW] <= no_n_q;
+        if (no_valid_q && no_ph_q == 2'd2) nh2_n_q <= {no_n_q, nc_n_q};
+    end
+    assign qnd_pop = no_valid_q && (no_ph_q == 2'd2);
+    reg [B-1:0] no_dj;
+    always @* begin
+        case (no_ph_q)
+            2'd0:    no_dj = qnd_d[0 +: B];
+            2'd1:    no_dj = qnd_d[B +: B];
+            default: no_dj = qnd_d[2*B +: B];
         endcase
     end
     wire [NDPW-1:0] ndp;
-    wire            unused_nd_v;
+    wire            unused_fd_v;
     csgrt_mul #(.A_WIDTH(NW), .B_WIDTH(B)) u_mul_nd (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(nh_valid_q),
-        .a_i(nh_nj), .b_i(nh_dj), .valid_o(unused_nd_v), .p_o(ndp));
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(no_valid_q),
+        .a_i(no_n_q), .b_i(no_dj), .valid_o(unused_fd_v), .p_o(ndp));
     wire       nd_valid;
     wire [1:0] nd_col;
     csgrt_delay #(.WIDTH(2), .STAGES(2)) u_dly_nd (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(nh_valid_q),
-        .data_i(nh_ph_q), .valid_o(nd_valid), .data_o(nd_col));
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(no_valid_q),
+        .data_i(no_ph_q), .valid_o(nd_valid), .data_o(nd_col));
     reg [NDSW-1:0] nd_acc_q;
     reg            nd_done_q;
     always @(posedge clk_i) begin

@@ -122,7 +122,12 @@ module tb_shade (
         .s_ambient_i(b12_ambient_i), .s_diffuse_i(b12_diffuse_i), .s_phong_i(b12_phong_i),
         .s_phong_size_i(b12_phong_size_i),
         .m_valid_o(b12_valid_o), .m_ready_i(b12_ready_i), .m_x_o(b12_x_o), .m_y_o(b12_y_o),
-        .m_r_o(b12_r_o), .m_g_o(b12_g_o), .m_b_o(b12_b_o));
+        .m_r_o(b12_r_o), .m_g_o(b12_g_o), .m_b_o(b12_b_o),
+        // the ray tree's outputs and light-colour port (LINEAR_OUT = EXT_LIGHT = 0): unused
+        /* verilator lint_off PINCONNECTEMPTY */
+        .m_local_o(), .m_spec_o(), .lc_tag_o(), .lc_k_o(),
+        /* verilator lint_on PINCONNECTEMPTY */
+        .lc_color_i(48'd0));
 
     csgrt_shade #(.BITS(16), .MAX_LIGHTS(8)) u_b16 (
         .clk_i(b16_clk_i), .rst_ni(b16_rst_ni),
@@ -133,7 +138,12 @@ module tb_shade (
         .s_ambient_i(b16_ambient_i), .s_diffuse_i(b16_diffuse_i), .s_phong_i(b16_phong_i),
         .s_phong_size_i(b16_phong_size_i),
         .m_valid_o(b16_valid_o), .m_ready_i(b16_ready_i), .m_x_o(b16_x_o), .m_y_o(b16_y_o),
-        .m_r_o(b16_r_o), .m_g_o(b16_g_o), .m_b_o(b16_b_o));
+        .m_r_o(b16_r_o), .m_g_o(b16_g_o), .m_b_o(b16_b_o),
+        // the ray tree's outputs and light-colour port (LINEAR_OUT = EXT_LIGHT = 0): unused
+        /* verilator lint_off PINCONNECTEMPTY */
+        .m_local_o(), .m_spec_o(), .lc_tag_o(), .lc_k_o(),
+        /* verilator lint_on PINCONNECTEMPTY */
+        .lc_color_i(48'd0));
 
     csgrt_shade #(.BITS(24), .MAX_LIGHTS(8)) u_b24 (
         .clk_i(b24_clk_i), .rst_ni(b24_rst_ni),
@@ -144,7 +154,12 @@ module tb_shade (
         .s_ambient_i(b24_ambient_i), .s_diffuse_i(b24_diffuse_i), .s_phong_i(b24_phong_i),
         .s_phong_size_i(b24_phong_size_i),
         .m_valid_o(b24_valid_o), .m_ready_i(b24_ready_i), .m_x_o(b24_x_o), .m_y_o(b24_y_o),
-        .m_r_o(b24_r_o), .m_g_o(b24_g_o), .m_b_o(b24_b_o));
+        .m_r_o(b24_r_o), .m_g_o(b24_g_o), .m_b_o(b24_b_o),
+        // the ray tree's outputs and light-colour port (LINEAR_OUT = EXT_LIGHT = 0): unused
+        /* verilator lint_off PINCONNECTEMPTY */
+        .m_local_o(), .m_spec_o(), .lc_tag_o(), .lc_k_o(),
+        /* verilator lint_on PINCONNECTEMPTY */
+        .lc_color_i(48'd0));
 
     csgrt_shade #(.BITS(32), .MAX_LIGHTS(8)) u_b32 (
         .clk_i(b32_clk_i), .rst_ni(b32_rst_ni),
@@ -155,7 +170,12 @@ module tb_shade (
         .s_ambient_i(b32_ambient_i), .s_diffuse_i(b32_diffuse_i), .s_phong_i(b32_phong_i),
         .s_phong_size_i(b32_phong_size_i),
         .m_valid_o(b32_valid_o), .m_ready_i(b32_ready_i), .m_x_o(b32_x_o), .m_y_o(b32_y_o),
-        .m_r_o(b32_r_o), .m_g_o(b32_g_o), .m_b_o(b32_b_o));
+        .m_r_o(b32_r_o), .m_g_o(b32_g_o), .m_b_o(b32_b_o),
+        // the ray tree's outputs and light-colour port (LINEAR_OUT = EXT_LIGHT = 0): unused
+        /* verilator lint_off PINCONNECTEMPTY */
+        .m_local_o(), .m_spec_o(), .lc_tag_o(), .lc_k_o(),
+        /* verilator lint_on PINCONNECTEMPTY */
+        .lc_color_i(48'd0));
 endmodule
 
 `default_nettype wire
