@@ -3,6 +3,9 @@
 // reader can check it against the paper cell by cell.
 #include "classify.h"
 
+#include <atomic>
+#include <cstring>
+
 namespace csgrt {
 
 std::string Class::str() const {
@@ -14,7 +17,7 @@ std::string Class::str() const {
     return "?";
 }
 
-Class table_add(Class l, Class r) {
+static inline Class table_add_i(Class l, Class r) {
     if (r.kind == Class::IN) return r;                       // right operand owns
     if (r.kind == Class::OUT) return l;
     // r is BORDER c,d
@@ -27,7 +30,7 @@ Class table_add(Class l, Class r) {
     return Class::out();                                     // cannot occur
 }
 
-Class table_sub(Class l, Class r) {
+static inline Class table_sub_i(Class l, Class r) {
     if (r.kind == Class::IN) return Class::out();
     if (r.kind == Class::OUT) return l;
     // r is BORDER c,d
@@ -39,7 +42,7 @@ Class table_sub(Class l, Class r) {
     return Class::out();                                     // OUT row; BORDER row cannot occur
 }
 
-Class table_and(Class l, Class r) {
+static inline Class table_and_i(Class l, Class r) {
     if (l.kind == Class::OUT) return Class::out();
     if (r.kind == Class::OUT) return Class::out();
     if (r.kind == Class::IN) return l;                       // IN l, or BORDER a,b
@@ -52,15 +55,32 @@ Class table_and(Class l, Class r) {
     return Class::out();                                     // cannot occur
 }
 
-Class combine(Op op, Class l, Class r) {
+static inline Class combine_i(Op op, Class l, Class r) {
     switch (op) {
-    case Op::ADD: return table_add(l, r);
-    case Op::SUB: return table_sub(l, r);
-    case Op::AND: return table_and(l, r);
+    case Op::ADD: return table_add_i(l, r);
+    case Op::SUB: return table_sub_i(l, r);
+    case Op::AND: return table_and_i(l, r);
     case Op::LEAF: break;
     }
     return Class::out();
 }
+
+// combine() of two steady values (IN or OUT, never BORDER), the only cells
+// reset() and set_flag() meet: the tables' IN/OUT rows and columns.
+static inline Class combine_steady(Op op, Class l, Class r) {
+    switch (op) {
+    case Op::ADD: return r.kind == Class::IN ? r : l;
+    case Op::SUB: return r.kind == Class::IN ? Class::out() : l;
+    case Op::AND: return (l.kind == Class::OUT || r.kind == Class::OUT) ? Class::out() : l;
+    case Op::LEAF: break;
+    }
+    return Class::out();
+}
+
+Class table_add(Class l, Class r) { return table_add_i(l, r); }
+Class table_sub(Class l, Class r) { return table_sub_i(l, r); }
+Class table_and(Class l, Class r) { return table_and_i(l, r); }
+Class combine(Op op, Class l, Class r) { return combine_i(op, l, r); }
 
 Class classify(const std::vector<Instr>& program, const uint8_t* flags,
                const uint8_t* leaf_material, int hit_leaf, bool entering) {
@@ -86,6 +106,8 @@ Class classify(const std::vector<Instr>& program, const uint8_t* flags,
 }
 
 ClassTree::ClassTree(const std::vector<Instr>& program) {
+    static std::atomic<uint64_t> next_id{1};
+    shape_id_ = next_id.fetch_add(1);
     std::vector<int> stack;
     for (const Instr& ins : program) {
         Node n;
@@ -111,11 +133,24 @@ ClassTree::ClassTree(const std::vector<Instr>& program) {
 
 void ClassTree::reset(const uint8_t* flags, const uint8_t* leaf_material) {
     for (size_t l = 0; l < material_.size(); ++l) material_[l] = leaf_material[l];
+    initialised_ = true;
     // nodes are in post-order: children before parents
     for (size_t i = 0; i < nodes_.size(); ++i) {
         const Node& n = nodes_[i];
         steady_[i] = n.op == Op::LEAF ? leaf_class(n.leaf, flags[n.leaf])
-                                      : combine(n.op, steady_[n.left], steady_[n.right]);
+                                      : combine_steady(n.op, steady_[n.left], steady_[n.right]);
+    }
+}
+
+void ClassTree::update(const uint8_t* flags, const uint8_t* leaf_material) {
+    if (!initialised_ || (!material_.empty() && std::memcmp(material_.data(), leaf_material, material_.size()) != 0)) {
+        reset(flags, leaf_material);
+        return;
+    }
+    for (size_t l = 0; l < leaf_node_.size(); ++l) {
+        if (leaf_node_[l] < 0) continue;
+        const bool in = steady_[leaf_node_[l]].kind == Class::IN;
+        if (in != bool(flags[l])) set_flag(int(l), flags[l]);
     }
 }
 
@@ -125,7 +160,11 @@ Class ClassTree::classify(int hit_leaf, bool entering) const {
     Class c = entering ? Class::border(0, m) : Class::border(m, 0);
     for (int child = leaf_node_[hit_leaf], p = nodes_[child].parent; p >= 0; child = p, p = nodes_[p].parent) {
         const Node& n = nodes_[p];
-        c = (n.left == child) ? combine(n.op, c, steady_[n.right]) : combine(n.op, steady_[n.left], c);
+        c = (n.left == child) ? combine_i(n.op, c, steady_[n.right]) : combine_i(n.op, steady_[n.left], c);
+        // Once the path's value equals the node's steady value, every node
+        // above combines exactly the steady values again: the answer is the
+        // root's steady value (set_flag and reset keep steady_ exact).
+        if (c == steady_[p]) return steady_[root_];
     }
     return c;
 }
@@ -134,7 +173,7 @@ void ClassTree::set_flag(int leaf, bool in) {
     int i = leaf_node_[leaf];
     steady_[i] = leaf_class(leaf, in);
     for (int p = nodes_[i].parent; p >= 0; p = nodes_[p].parent) {
-        const Class v = combine(nodes_[p].op, steady_[nodes_[p].left], steady_[nodes_[p].right]);
+        const Class v = combine_steady(nodes_[p].op, steady_[nodes_[p].left], steady_[nodes_[p].right]);
         if (v == steady_[p]) break;   // nothing above changes either
         steady_[p] = v;
     }

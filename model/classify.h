@@ -61,9 +61,17 @@ class ClassTree {
     explicit ClassTree(const std::vector<Instr>& program);
     // Sets every leaf's flag and recomputes all steady values.
     void reset(const uint8_t* flags, const uint8_t* leaf_material);
+    // The same state as reset(), reached from the current one by set_flag()
+    // on the leaves whose flag differs (a full reset the first time, or when
+    // the materials differ).
+    void update(const uint8_t* flags, const uint8_t* leaf_material);
     Class classify(int hit_leaf, bool entering) const;
     // Sets one leaf's flag and updates its ancestors.
     void set_flag(int leaf, bool in);
+    // Identifies the tree's shape (the program it was built from): copies
+    // share it, every tree built from a program gets a new one. A walk that
+    // reuses a working tree copies the prototype only when the id differs.
+    uint64_t shape_id() const { return shape_id_; }
 
   private:
     struct Node {
@@ -77,6 +85,8 @@ class ClassTree {
     std::vector<uint8_t> material_;
     std::vector<Class> steady_;
     int root_ = -1;
+    uint64_t shape_id_ = 0;
+    bool initialised_ = false;   // reset() has run
 };
 
 // Largest stack depth the program reaches.

@@ -5,6 +5,8 @@
 // quantised. Anything that does not fit is a SceneError naming the object.
 #include "compile.h"
 
+#include "cull.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -121,6 +123,7 @@ class Flattener {
     glm::dvec3 box_min{std::numeric_limits<double>::infinity()};
     glm::dvec3 box_max{-std::numeric_limits<double>::infinity()};
     std::vector<std::pair<const Object*, glm::dmat4>> finite;   // for the resolution check
+    std::vector<CullPrimitive> prims;   // finite primitives, for the culling boxes (cull.h)
     int max_leaves = kMaxLeaves;
 
     void add_point(const glm::dvec3& p) {
@@ -178,6 +181,20 @@ class Flattener {
         leaves.push_back({world, mat, o.pos, what});
     }
 
+    // Records a finite primitive whose leaves are the next ones added.
+    void add_prim(CullPrimitive::Kind kind, const Object& o, const glm::dmat4& m, double r0, double r1) {
+        CullPrimitive c;
+        c.kind = kind;
+        c.to_world = m;
+        c.v0 = o.v0;
+        c.v1 = o.v1;
+        c.r0 = r0;
+        c.r1 = r1;
+        c.first_leaf = int(leaves.size());
+        c.num_leaves = kind == CullPrimitive::Box ? 6 : kind == CullPrimitive::Capped ? 3 : 1;
+        prims.push_back(c);
+    }
+
     void bound(const glm::dmat4& m, const glm::dvec3& lo, const glm::dvec3& hi) {
         for (int i = 0; i < 8; ++i) {
             glm::dvec3 c((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
@@ -193,6 +210,7 @@ class Flattener {
         const glm::dvec3 axis_v = o.v1 - o.v0;
         const double len = glm::length(axis_v);
         const glm::dvec3 axis = axis_v / len;
+        add_prim(CullPrimitive::Capped, o, m, r0, r1);
         leaf(o, transform_quadric(cone_quadric(o.v0, axis, r0, (r1 - r0) / len), m), mat, o.keyword + " (side)");
         leaf(o, transform_quadric(plane_quadric(-axis, -glm::dot(axis, o.v0)), m), mat, o.keyword + " (base cap)");
         program.push_back({Op::AND, 0});
@@ -209,12 +227,16 @@ class Flattener {
     void primitive(const Object& o, const glm::dmat4& m, int mat) {
         switch (o.prim) {
         case PrimKind::Sphere:
+            add_prim(CullPrimitive::Sphere, o, m, o.r0, o.r0);
             leaf(o, transform_quadric(sphere_quadric(o.v0, o.r0), m), mat, "sphere");
             bound(m, o.v0 - glm::dvec3(o.r0), o.v0 + glm::dvec3(o.r0));
             finite.push_back({&o, m});
             return;
         case PrimKind::Box: {
             const glm::dvec3 lo = glm::min(o.v0, o.v1), hi = glm::max(o.v0, o.v1);
+            add_prim(CullPrimitive::Box, o, m, 0.0, 0.0);
+            prims.back().v0 = lo;
+            prims.back().v1 = hi;
             static const char* names[3] = {"x", "y", "z"};
             bool first = true;
             for (int axis = 0; axis < 3; ++axis) {
@@ -248,6 +270,8 @@ class Flattener {
             q.A[1][2] = q.A[2][1] = 0.5 * c[5];
             q.p = 0.5 * glm::dvec3(c[6], c[7], c[8]);
             q.q = c[9];
+            add_prim(CullPrimitive::Quadric, o, m, 0.0, 0.0);
+            prims.back().quad = q;
             leaf(o, transform_quadric(q, m), mat, "quadric");
             return;
         }
@@ -354,6 +378,7 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
     // 4. Leaves: quadric into the frame, normalise, quantise.
     const int FC = cs.fmt.coef_frac;
     const double coef_max = std::ldexp(1.0, FC) - 1.0;   // largest coefficient magnitude, in ulps
+    std::vector<double> leaf_scale;   // the normalisation divisor of each leaf (for the culling boxes)
     for (const PendingLeaf& pl : fl.leaves) {
         LeafInfo li;
         QuadricD q = transform_quadric(pl.world, to_frame);   // world -> frame
@@ -364,6 +389,7 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
         }
         if (!(maxabs > 0.0) || !std::isfinite(maxabs))
             throw SceneError(pl.pos, pl.what + ": degenerate half-space (all coefficients zero)");
+        leaf_scale.push_back(maxabs);
         const double k = 1.0 / maxabs;
         q.A *= k;
         q.p *= k;
@@ -389,6 +415,8 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
     cs.program = balance_program(fl.program);
     cs.class_tree = ClassTree(cs.program);
     cs.stack_depth = stack_depth(cs.program);
+    if (opt.cull)
+        cs.cull = build_cull_bounds(cs.program, cs.leaves, fl.prims, leaf_scale, to_frame, cs.fmt);
     if (cs.stack_depth > kMaxStackDepth)
         throw SceneError(scene_pos, "the CSG tree needs a classifier stack of " + std::to_string(cs.stack_depth) +
                                         " entries, more than the limit of " + std::to_string(kMaxStackDepth) +

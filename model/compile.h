@@ -74,6 +74,40 @@ struct CameraInfo {
     std::array<i64, 3> origin_fx{}, base_fx{}, dx_fx{}, dy_fx{};
 };
 
+// Bounding boxes of the classification tree's subtrees, for culling
+// (model/cull.h, docs/numerics.md section 9). Nodes are in
+// preorder; node i's subtree is nodes [i, skip) and its leaves are
+// pre_leaves[leaf_begin, leaf_end). A bounded node's box contains every
+// point of the coordinate range where its subtree can be anything but OUT
+// for the fixed-point tracer; cert[cert_begin, cert_end) are the leaves
+// whose relaxed half-spaces that box bounds.
+struct CullNode {
+    enum Kind : uint8_t { UNBOUNDED = 0, BOX = 1, EMPTY = 2 };
+    Kind kind = UNBOUNDED;
+    bool test = false;                      // BOX worth testing (a speed choice)
+    bool range = false;                     // tested, and worth a t range for its events (cull.h)
+    int skip = 0;
+    int leaf = -1;                          // a LEAF node's leaf
+    uint32_t leaf_begin = 0, leaf_end = 0;  // its leaves in pre_leaves
+    uint32_t cert_begin = 0, cert_end = 0;  // its certificate leaves in cert
+    std::array<i64, 3> lo{}, hi{};          // F fraction bits, rounded outward
+};
+struct CullBounds {
+    std::vector<CullNode> nodes;
+    std::vector<uint16_t> pre_leaves;
+    std::vector<uint16_t> cert;
+    // per leaf: a plane (A = 0) with its quadric_at_fx in one line,
+    // Q(p) = rnd(sum p_i P_i, F) + Q0 with P_i = 2 rnd(p_i, FC - F),
+    // Q0 = rnd(q, FC - F): plane[l] = {P0, P1, P2, Q0}
+    std::vector<uint8_t> is_plane;
+    std::vector<std::array<i64, 4>> plane;
+    // the nodes a ray visits (tested or EMPTY), in preorder, and for each the
+    // position in this list after its subtree
+    std::vector<int> visit, visit_skip;
+    bool any_range = false;                // some node has a t range
+    bool empty() const { return nodes.empty(); }
+};
+
 struct CompiledScene {
     Formats fmt;
     int width = 320, height = 240;
@@ -93,6 +127,7 @@ struct CompiledScene {
     TreeLayout layout;                     // the tree as the RTL evaluates it (when requested)
     int max_trace_level = 5;
     int stack_depth = 0;
+    CullBounds cull;                       // empty: the tracer intersects every leaf
     bool identical_coefs(int leaf_a, int leaf_b) const { return leaves[leaf_a].coef == leaves[leaf_b].coef; }
 };
 
@@ -102,6 +137,7 @@ struct CompileOptions {
     int height = 240;
     int max_leaves = kMaxLeaves;   // the target's MAX_LEAVES
     int tree_height = 0;           // the target's TREE_HEIGHT; 0: no layout (model only)
+    bool cull = true;              // bounding boxes for culling (model/cull.h); off: none
 };
 
 // Defaults of the RTL configuration (csgrt_top's parameters).

@@ -82,6 +82,14 @@ inline u128 udiv_bitwise(u128 n, u128 d, int quot_bits) {
 // two against each other.
 inline u128 isqrt_fast(u128 n) {
     if (n == 0) return 0;
+    if (n >> 64 == 0) {
+        // 64-bit values: a double estimate (within a few units of the root,
+        // which is below 2^32), corrected exactly; no long double conversion
+        u64 r = u64(__builtin_sqrt(double(u64(n))));
+        while (u128(r) * r > n) --r;
+        while (u128(r + 1) * (r + 1) <= n) ++r;
+        return r;
+    }
     u128 r = u128(__builtin_sqrtl((long double)n));
     while (r * r > n) --r;
     while ((r + 1) * (r + 1) <= n) ++r;

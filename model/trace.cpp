@@ -4,6 +4,8 @@
 // (round half up) or sdiv_trunc (toward zero), nothing else.
 #include "trace.h"
 
+#include "cull.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -76,6 +78,21 @@ LeafEvents<i64> intersect_impl(const Formats& fmt, const std::array<i64, kNumCoe
                          {k[C_A01], k[C_A11], k[C_A12]},
                          {k[C_A02], k[C_A12], k[C_A22]}};
     const i64 p[3] = {k[C_P0], k[C_P1], k[C_P2]};
+    i64 a, b, c;
+    if (k[C_A00] == 0 && k[C_A11] == 0 && k[C_A22] == 0 && k[C_A01] == 0 && k[C_A02] == 0 && k[C_A12] == 0) {
+        // A plane (A = 0), the same values with the zero products left out:
+        // u = 0 and a = 0; w_i = rnd(p_i << F, FC) = rnd(p_i, FC - F) exactly
+        // (the shift by F moves numerator and rounding constant alike).
+        W sb = 0, sc = 0;
+        for (int i = 0; i < 3; ++i) {
+            const i64 w = i64(rshift_round_t<i64>(p[i], FC - F));
+            sb += W(r.d[i]) * w;
+            sc += W(r.o[i]) * (2 * w);
+        }
+        a = 0;
+        b = i64(rshift_round_t<W>(sb, F));
+        c = i64(rshift_round_t<W>(sc, F)) + i64(rshift_round_t<i64>(k[C_Q], FC - F));
+    } else {
     i64 u[3], w[3];
     for (int i = 0; i < 3; ++i) {
         W su = 0, sw = W(p[i]) << F;
@@ -95,9 +112,10 @@ LeafEvents<i64> intersect_impl(const Formats& fmt, const std::array<i64, kNumCoe
         sb += W(r.d[i]) * w[i];
         sc += W(r.o[i]) * (w[i] + i64(rshift_round_t<i64>(p[i], FC - F)));
     }
-    const i64 a = i64(rshift_round_t<W>(sa, F));
-    const i64 b = i64(rshift_round_t<W>(sb, F));
-    const i64 c = i64(rshift_round_t<W>(sc, F)) + i64(rshift_round_t<i64>(k[C_Q], FC - F));
+    a = i64(rshift_round_t<W>(sa, F));
+    b = i64(rshift_round_t<W>(sb, F));
+    c = i64(rshift_round_t<W>(sc, F)) + i64(rshift_round_t<i64>(k[C_Q], FC - F));
+    }
     le.a = a;
     le.b = b;
     le.c = c;
@@ -207,14 +225,23 @@ template bool event_before(const Event<double>&, const Event<double>&, TiePolicy
 
 namespace {
 
+// Set when a look-ahead run crosses (or skips as invalid) an event at a later
+// t than its hit: a culled trace then cannot vouch for its flags and is
+// traced again without culling (trace_fx).
+thread_local bool t_lookahead_passed_later = false;
+
 // The walk shared by both arithmetics. `flags` holds the origin flags on
 // entry; events behind the origin have already been applied (primary) or are
 // ignored (secondary).
 // `beyond(e, hit_t)`: does the hit point at hit_t already lie beyond the
 // surface of event e (for the look-ahead).
+// `live` (optional, per leaf): the t range outside which an event of the
+// leaf lies outside a box that vouches its subtree OUT (cull.h): such an
+// event is not classified (it cannot be a hit), only checked and toggled.
 template <typename T, typename Beyond>
 TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::vector<uint8_t>& flags,
-                    TiePolicy ties, bool diag, bool lookahead, Beyond beyond) {
+                    TiePolicy ties, bool diag, bool lookahead, Beyond beyond,
+                    const std::array<i64, 2>* live = nullptr) {
     TraceResult<T> res;
     if (diag) res.origin_flags = flags;
     std::sort(ahead.begin(), ahead.end(),
@@ -222,8 +249,8 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
     if (diag) res.events = ahead;
     thread_local ClassTree tree;
     if (!ahead.empty()) {
-        tree = cs.class_tree;   // copy-assignment reuses this thread's buffers
-        tree.reset(flags.data(), cs.leaf_material.data());
+        if (tree.shape_id() != cs.class_tree.shape_id()) tree = cs.class_tree;   // same shape: reset() suffices
+        tree.update(flags.data(), cs.leaf_material.data());   // = reset(), incrementally
     }
     thread_local std::vector<size_t> crossed;   // the valid events so far, in order
     crossed.clear();
@@ -232,7 +259,8 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
         // Validity check: entering while IN or leaving while OUT is impossible.
         if (bool(flags[e.leaf]) == e.entering) continue;
         // classify(cs.program, flags, ...) evaluated incrementally (ClassTree)
-        const Class cl = tree.classify(e.leaf, e.entering);
+        const bool dead = live && (e.t < T(live[e.leaf][0]) || e.t > T(live[e.leaf][1]));
+        const Class cl = dead ? Class::out() : tree.classify(e.leaf, e.entering);
         flags[e.leaf] = e.entering;
         tree.set_flag(e.leaf, e.entering);
         crossed.push_back(i);
@@ -263,6 +291,7 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             for (size_t j = i + 1; lookahead && is_transparent(cs, res.border.to) && j < ahead.size(); ++j) {
                 const Event<T>& n = ahead[j];
                 if (!(n.t == e.t || beyond(n, e.t))) break;
+                if (n.t != e.t) t_lookahead_passed_later = true;   // for the culling's check (cull.h)
                 if (bool(flags[n.leaf]) == n.entering) continue;   // invalid: skipped
                 const Class c2 = tree.classify(n.leaf, n.entering);
                 flags[n.leaf] = n.entering;
@@ -282,28 +311,44 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
     return res;
 }
 
+// The candidates of one leaf: its events ahead (before t_limit) appended to
+// `ahead`, and its origin flag.
+template <typename T, typename Intersect>
+void collect_leaf(size_t l, Intersect& isect, const std::vector<uint8_t>* inherited, T t_limit,
+                  std::vector<Event<T>>& ahead, std::vector<uint8_t>& flags) {
+    LeafEvents<T> le = isect(l);
+    bool f = inherited ? (*inherited)[l] : le.inside_at_minus_inf;
+    for (int i = 0; i < le.count; ++i) {
+        Event<T> e = le.ev[i];
+        e.leaf = uint16_t(l);
+        if (e.ahead()) {
+            if (!(t_limit > T(0)) || e.t < t_limit) ahead.push_back(e);
+        }
+        else if (!inherited && e.behind())
+            f = !f;   // each crossing behind the origin toggles the state
+    }
+    flags[l] = f;
+}
+
+// `culled` (optional, one byte per leaf): leaves not intersected; their
+// flags are OUT for the walk (every subtree made of them is then OUT, as it
+// is at every event of the full trace: cull.h). With keep_ahead and
+// keep_flags, the candidates (events and origin flags, before the walk) are
+// also copied there.
 template <typename T, typename Intersect, typename Beyond>
 TraceResult<T> trace_generic(const CompiledScene& cs, Intersect isect, const std::vector<uint8_t>* inherited,
-                             TiePolicy ties, bool diag, T t_limit, bool lookahead, Beyond beyond) {
+                             TiePolicy ties, bool diag, T t_limit, bool lookahead, Beyond beyond,
+                             const uint8_t* culled = nullptr, const std::array<i64, 2>* live = nullptr,
+                             std::vector<Event<T>>* keep_ahead = nullptr, std::vector<uint8_t>* keep_flags = nullptr) {
     const size_t n = cs.leaves.size();
-    std::vector<uint8_t> flags(n);
-    std::vector<Event<T>> ahead;
-    ahead.reserve(2 * n);
-    for (size_t l = 0; l < n; ++l) {
-        LeafEvents<T> le = isect(l);
-        bool f = inherited ? (*inherited)[l] : le.inside_at_minus_inf;
-        for (int i = 0; i < le.count; ++i) {
-            Event<T> e = le.ev[i];
-            e.leaf = uint16_t(l);
-            if (e.ahead()) {
-                if (!(t_limit > T(0)) || e.t < t_limit) ahead.push_back(e);
-            }
-            else if (!inherited && e.behind())
-                f = !f;   // each crossing behind the origin toggles the state
-        }
-        flags[l] = f;
-    }
-    return walk<T>(cs, ahead, flags, ties, diag, lookahead, beyond);
+    thread_local std::vector<uint8_t> flags;
+    thread_local std::vector<Event<T>> ahead;
+    flags.assign(n, 0);
+    ahead.clear();
+    for (size_t l = 0; l < n; ++l)
+        if (!(culled && culled[l])) collect_leaf<T>(l, isect, inherited, t_limit, ahead, flags);
+    if (keep_ahead) *keep_ahead = ahead, *keep_flags = flags;
+    return walk<T>(cs, ahead, flags, ties, diag, lookahead, beyond, live);
 }
 
 }  // namespace
@@ -374,11 +419,128 @@ auto beyond_d(const CompiledScene& cs, const RayD& ray) {
 
 }  // namespace
 
+namespace {
+
+// The fixed-point trace of every leaf that is not culled.
+TraceResult<i64> trace_fx_full(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>* inherited,
+                               TiePolicy ties, bool diag, const TraceOptions& opt, const uint8_t* culled = nullptr,
+                               const std::array<i64, 2>* live = nullptr) {
+    return trace_generic<i64>(
+        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, inherited, ties, diag,
+        opt.t_limit_fx, opt.lookahead, beyond_fx(cs, ray), culled, live);
+}
+
+// Completes a culled trace's result where it differs from the full trace's:
+// the flags of the culled leaves at the hit. The argument is
+// docs/numerics.md, section 9:
+//  - the look-behind undid only crossings at the hit's t (no culled leaf has
+//    an event there, so none sits among them in the full trace's order),
+//  - no look-ahead run passed an event at a later t (a culled event there
+//    would have stopped the full trace's run),
+//  - every culled leaf's surface is clear of the hit point by
+//    kCullHitMargin: its flag at the hit is its state by its own quadric,
+//    the sign of Q at the hit point (for a secondary ray whose inherited
+//    flag differs from that state, the leaf must have crossed between the
+//    origin and the hit: its state at the origin, clear of the surface by
+//    kCullOriginMargin, must be the other one).
+// Culled leaves that fail the last condition go to `uncull` (traced again
+// with them intersected: Done is then false); Full: trace without culling.
+enum class Completion { Done, Uncull, Full };
+Completion complete_culled(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>* inherited,
+                           const std::vector<uint8_t>& culled, TraceResult<i64>& r,
+                           std::vector<int>& uncull) {
+    if (!r.hit || t_lookahead_passed_later) return Completion::Full;
+    const auto beyond = beyond_fx(cs, ray);
+    for (const Event<i64>& b : r.near_run) {   // the prefix walk() undid
+        if (!(b.t == r.t || !beyond(b, r.t))) break;
+        if (b.t != r.t) return Completion::Full;
+    }
+    std::array<i64, 3> p;
+    if (!hit_point_fx(cs.fmt, ray, r.t, p)) return Completion::Full;
+    uncull.clear();
+    for (size_t l = 0; l < culled.size(); ++l) {
+        if (!culled[l]) continue;
+        const i64 q = leaf_q(cs, int(l), p);
+        if (q >= -kCullHitMargin && q <= kCullHitMargin) {
+            uncull.push_back(int(l));
+            continue;
+        }
+        const uint8_t state = q < 0;
+        if (inherited && (*inherited)[l] != state) {
+            const i64 q0 = leaf_q(cs, int(l), ray.o);
+            // the same state at both ends: crossed twice or never
+            if ((q0 >= -kCullOriginMargin && q0 <= kCullOriginMargin) || uint8_t(q0 < 0) == state) {
+                uncull.push_back(int(l));
+                continue;
+            }
+        }
+        if (uncull.empty()) r.flags_before[l] = r.flags_after[l] = r.flags_hit_near[l] = state;
+    }
+    return uncull.empty() ? Completion::Done : Completion::Uncull;
+}
+
+// The margins of the culling argument assume a ray as the renderer makes
+// them: origin inside the coordinate range [-4, 4), |d| <= 1.
+bool cullable(const Formats& fmt, const RayFx& ray) {
+    const i64 lim = i64(4) << fmt.frac;
+    i128 d2 = 0;
+    for (int i = 0; i < 3; ++i) {
+        if (ray.o[i] < -lim || ray.o[i] >= lim) return false;
+        d2 += i128(ray.d[i]) * ray.d[i];
+    }
+    return d2 <= i128(1) << (2 * fmt.frac);
+}
+
+// The fixed-point trace, culled when the scene has boxes (cull.h): a leaf of
+// a subtree that is OUT along the whole segment is not intersected; if some
+// culled leaf's flag at the hit cannot be vouched for, the ray is traced
+// again with those leaves intersected (the rest of their subtrees still
+// culled: forcing a leaf OUT keeps every certificate), and in the rare
+// cases the completion does not cover, without culling.
+TraceResult<i64> trace_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>* inherited,
+                          TiePolicy ties, bool diag, const TraceOptions& opt) {
+    if (!opt.cull || diag || cs.cull.empty() || !cullable(cs.fmt, ray))
+        return trace_fx_full(cs, ray, inherited, ties, diag, opt);
+    thread_local std::vector<uint8_t> culled;
+    thread_local std::vector<int> uncull;
+    const i64 t_end = opt.t_limit_fx > 0 ? std::min(opt.t_limit_fx, cs.fmt.t_limit()) : cs.fmt.t_limit();
+    thread_local std::vector<std::array<i64, 2>> live;
+    const int n_culled = select_culled(cs, ray, t_end, inherited, culled, &live);
+    const std::array<i64, 2>* lv = cs.cull.any_range ? live.data() : nullptr;
+    if (n_culled == 0) return trace_fx_full(cs, ray, inherited, ties, diag, opt, nullptr, lv);
+    // the first trace leaves its candidates here; a second one adds the
+    // events of the leaves it intersects after all
+    thread_local std::vector<Event<i64>> ahead0, ahead;
+    thread_local std::vector<uint8_t> flags0, flags;
+    auto isect = [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); };
+    for (int pass = 0; pass < 2; ++pass) {
+        t_lookahead_passed_later = false;
+        TraceResult<i64> r;
+        if (pass == 0) {
+            r = trace_generic<i64>(cs, isect, inherited, ties, diag, opt.t_limit_fx, opt.lookahead, beyond_fx(cs, ray),
+                                   culled.data(), lv, &ahead0, &flags0);
+        } else {
+            for (int l : uncull) collect_leaf<i64>(size_t(l), isect, inherited, opt.t_limit_fx, ahead0, flags0);
+            ahead = ahead0;
+            flags = flags0;
+            r = walk<i64>(cs, ahead, flags, ties, diag, opt.lookahead, beyond_fx(cs, ray), lv);
+        }
+        if (r.flags_before.empty()) return r;   // no crossing was ever a hit candidate
+        const Completion c = complete_culled(cs, ray, inherited, culled, r, uncull);
+        if (c == Completion::Done) return r;
+        if (c == Completion::Full) break;
+        for (int l : uncull) culled[l] = 0;
+        if (pass == 0) count_cull_retrace();
+    }
+    count_cull_fallback();
+    return trace_fx_full(cs, ray, inherited, ties, diag, opt);
+}
+
+}  // namespace
+
 TraceResult<i64> trace_primary_fx(const CompiledScene& cs, const RayFx& ray, TiePolicy ties, bool diag,
                                   const TraceOptions& opt) {
-    return trace_generic<i64>(
-        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, nullptr, ties, diag,
-        opt.t_limit_fx, opt.lookahead, beyond_fx(cs, ray));
+    return trace_fx(cs, ray, nullptr, ties, diag, opt);
 }
 
 TraceResult<double> trace_primary_d(const CompiledScene& cs, const RayD& ray, TiePolicy ties, bool diag,
@@ -390,9 +552,7 @@ TraceResult<double> trace_primary_d(const CompiledScene& cs, const RayD& ray, Ti
 
 TraceResult<i64> trace_secondary_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<uint8_t>& flags,
                                     TiePolicy ties, bool diag, const TraceOptions& opt) {
-    return trace_generic<i64>(
-        cs, [&](size_t l) { return intersect_fx(cs.fmt, cs.leaves[l].coef, ray); }, &flags, ties, diag,
-        opt.t_limit_fx, opt.lookahead, beyond_fx(cs, ray));
+    return trace_fx(cs, ray, &flags, ties, diag, opt);
 }
 
 TraceResult<double> trace_secondary_d(const CompiledScene& cs, const RayD& ray, const std::vector<uint8_t>& flags,

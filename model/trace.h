@@ -97,10 +97,17 @@ struct TraceResult {
 // just before a hit; the RTL hands them to the child rays beside the hit.
 constexpr int kLookBehind = 4;
 
+//  - cull: the fixed-point tracer skips the leaves of subtrees whose
+//    bounding box (CompiledScene::cull) the ray's segment misses; the result
+//    is the same TraceResult bit for bit (model/cull.h) except near_run,
+//    which then lists the crossings of intersected leaves only. Off with
+//    keep_diagnostics (events and origin_flags need every leaf), and when
+//    the scene was compiled without boxes (--no-cull).
 struct TraceOptions {
     i64 t_limit_fx = 0;
     double t_limit_d = 0.0;
     bool lookahead = false;
+    bool cull = true;
 };
 
 // Trace a primary ray: origin flags from the state at -infinity toggled by

@@ -39,11 +39,14 @@ cells() {   # shadows reflection
     local f="$OUT/cells_b${BITS}s$1r$2.txt"
     if [ ! -s "$f" ]; then
         echo "bench-effects: yosys cell count for SHADOWS=$1 REFLECTION=$2 (a few minutes)" >&2
+        # coarse cells (after proc and opt: adders, multipliers, muxes,
+        # registers as words), summed over the hierarchy: quick, and enough
+        # to see which units a build has
         yosys -q -p "read_verilog -Irtl rtl/csgrt_*.v; chparam -set BITS $BITS -set SHADOWS $1 -set REFLECTION $2 csgrt_top; \
-                     hierarchy -top csgrt_top; proc; flatten; opt -fast; memory -nomap; opt_clean; techmap; opt -fast; \
-                     tee -o $f stat" >/dev/null 2>&1 || { echo "?" > "$f"; }
+                     hierarchy -top csgrt_top; proc; opt -fast; tee -o $f stat -top csgrt_top" >/dev/null 2>&1 \
+            || { echo "?" > "$f"; }
     fi
-    grep -m1 "Number of cells" "$f" | awk '{print $NF}' || echo "?"
+    awk '/design hierarchy/ {h = 1} h && /Number of cells/ {print $NF; exit}' "$f" | grep . || echo "?"
 }
 
 median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
