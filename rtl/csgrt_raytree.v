@@ -373,7 +373,6 @@ module csgrt_raytree #(
     endgenerate
 
     // ---- the hit's decisions ---------------------------------------------------------------
-    wire [7:0]  next_depth = {4'd0, h_depth} + 8'd1;
     wire        deeper     = ({4'd0, h_depth} < max_trace_i);
     wire        want_refl  = (REFLECTION != 0) && deeper && (h_mat[M_REFL +: 16] != 16'd0);
     wire [MAX_LIGHTS-1:0] light_mask;
@@ -537,7 +536,6 @@ module csgrt_raytree #(
             if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
         end
     end
-    wire unused_next_depth = ^next_depth;
 
     // ---- pixels out, in raster order --------------------------------------------------------
     wire [38:0] ob_head  = ob_acc_q[retire_q[OBW-1:0]];
