@@ -13,7 +13,7 @@ BUILD        ?= build
 VERILATOR    ?= verilator
 YOSYS        ?= yosys
 TB_NAMES     := sqrt div isect camera shade
-TB_NAMES     += class_node class_tree walk spawn
+TB_NAMES     += class_node class_tree walk spawn quadric_at
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_COMMON    := $(wildcard tb/common/*.h)
@@ -39,6 +39,9 @@ TB_DEP_shade  := $(TB_DEP_isect)
 # and the secondary-ray geometry bench (csgrt_spawn)
 TB_LIB_spawn  := $(TB_LIB_isect)
 TB_DEP_spawn  := $(TB_DEP_isect)
+# and the look-ahead's quadric test (csgrt_quadric_at)
+TB_LIB_quadric_at := $(TB_LIB_isect)
+TB_DEP_quadric_at := $(TB_DEP_isect)
 
 # $(1): testbench name (folder tb/$(1)/ with tb_$(1).v and tb_$(1).cpp)
 define TB_RULE
