@@ -288,7 +288,8 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             }
             // Look-ahead through coincident surfaces behind a transparent
             // crossing (algorithm.md section 6).
-            for (size_t j = i + 1; lookahead && is_transparent(cs, res.border.to) && j < ahead.size(); ++j) {
+            size_t j = i + 1;
+            for (; lookahead && is_transparent(cs, res.border.to) && j < ahead.size(); ++j) {
                 const Event<T>& n = ahead[j];
                 if (!(n.t == e.t || beyond(n, e.t))) break;
                 if (n.t != e.t) t_lookahead_passed_later = true;   // for the culling's check (cull.h)
@@ -296,12 +297,21 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
                 const Class c2 = tree.classify(n.leaf, n.entering);
                 flags[n.leaf] = n.entering;
                 tree.set_flag(n.leaf, n.entering);
+                crossed.push_back(j);
                 if (c2.kind == Class::BORDER && c2.from != c2.to) res.border.to = c2.to;   // BORDER a1, an
             }
             if (res.border.from == res.border.to) {
-                // the run came back to where it started: nothing is crossed
+                // The run came back to where it started: the run is one
+                // crossing BORDER a1, a1, discarded like any other; the walk
+                // goes on after the run, whose crossings stand (each was
+                // valid and is toggled). The run's events are not walked
+                // again: a leaf with two events in the run (a tangent ray's
+                // enter and leave at one t) would otherwise be crossed anew.
+                // The walker in the RTL, which classifies the run's tokens
+                // once, in order, does the same.
                 res.hit = false;
                 res.near_run.clear();
+                i = j - 1;
                 continue;
             }
             res.flags_after = flags;
