@@ -217,6 +217,9 @@ module csgrt_top #(
             );
             // Q at the ray's origin is positive (the look-behind of secondary rays)
             wire cpos = !res_c[BITS+5] && (res_c != {(BITS+6){1'b0}});
+            wire                 w_q_valid, w_a_ready, w_q_payload;
+            wire [BITS-2:0]      w_q_t;
+            wire [LEAF_BITS-1:0] w_q_leaf;
 
             csgrt_walk_unit #(
                 .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
@@ -247,12 +250,17 @@ module csgrt_top #(
                 .lb_count_o (w_run[k*RUN_W +: LBC]),
                 .lb_slot_o (w_run[k*RUN_W + LBC +: LOOK_BEHIND*TREE_HEIGHT]),
                 .lb_entering_o (w_run[k*RUN_W + LBC + LOOK_BEHIND*TREE_HEIGHT +: LOOK_BEHIND]),
-                .lb_same_t_o (w_run[k*RUN_W + LBC + LOOK_BEHIND*(TREE_HEIGHT+1) +: LOOK_BEHIND])
+                .lb_same_t_o (w_run[k*RUN_W + LBC + LOOK_BEHIND*(TREE_HEIGHT+1) +: LOOK_BEHIND]),
+                // no refraction yet: no look-ahead (LOOK_AHEAD = 0 ignores these)
+                .mat_clear_i ({256{1'b0}}), .q_valid_o (w_q_valid), .q_ready_i (1'b0), .q_t_o (w_q_t),
+                .q_leaf_o (w_q_leaf), .q_payload_o (w_q_payload), .a_valid_i (1'b0), .a_ready_o (w_a_ready),
+                .a_nonpos_i (1'b0)
             );
 
             // Not used: the coefficients along the ray (debug) but c's sign,
-            // the hit's tree slot and the payload.
-            wire unused_lane = &{1'b0, res_a, res_b, w_slot, w_payload};
+            // the hit's tree slot and the payload; the look-ahead's query port.
+            wire unused_lane = &{1'b0, res_a, res_b, w_slot, w_payload, w_q_valid, w_a_ready, w_q_payload, w_q_t,
+                                 w_q_leaf};
         end
     endgenerate
 

@@ -32,6 +32,8 @@
 //                      they form the info record of the hit's children:
 //                      near side (shadow, reflected) {flags_before_o, lb_*_o},
 //                      far side {flags_after_o, lb_count 0}.
+// The refraction look-ahead (LOOK_AHEAD = 1, needs SECONDARY = 1): see
+// csgrt_walker; mat_clear_i and the query port q_*/a_* pass through to it.
 module csgrt_walk_unit #(
     parameter BITS          = 24,   // coordinate width B; t is B-1 bits
     parameter MAX_LEAVES    = 64,   // leaves per ray
@@ -40,7 +42,8 @@ module csgrt_walk_unit #(
     parameter MAT_BITS      = 8,    // material index width
     parameter PAYLOAD_WIDTH = 1,    // per-ray sideband (>= 1)
     parameter SECONDARY     = 0,    // 1: secondary rays (info stream, run, flags after)
-    parameter LOOK_BEHIND   = 4     // look-behind entries (kLookBehind), >= 1
+    parameter LOOK_BEHIND   = 4,    // look-behind entries (kLookBehind), >= 1
+    parameter LOOK_AHEAD    = 0     // 1: the refraction look-ahead (csgrt_walker)
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,           // synchronous, active low
@@ -92,7 +95,17 @@ module csgrt_walk_unit #(
     output wire [$clog2(LOOK_BEHIND+1)-1:0]     lb_count_o,
     output wire [LOOK_BEHIND*TREE_HEIGHT-1:0]   lb_slot_o,
     output wire [LOOK_BEHIND-1:0]               lb_entering_o,
-    output wire [LOOK_BEHIND-1:0]               lb_same_t_o
+    output wire [LOOK_BEHIND-1:0]               lb_same_t_o,
+    // the look-ahead (LOOK_AHEAD; csgrt_walker)
+    input  wire [(1<<MAT_BITS)-1:0]             mat_clear_i,
+    output wire                     q_valid_o,
+    input  wire                     q_ready_i,
+    output wire [BITS-2:0]          q_t_o,
+    output wire [LEAF_BITS-1:0]     q_leaf_o,
+    output wire [PAYLOAD_WIDTH-1:0] q_payload_o,
+    input  wire                     a_valid_i,
+    output wire                     a_ready_o,
+    input  wire                     a_nonpos_i
 );
 
     localparam NS = 1 << TREE_HEIGHT;
@@ -125,7 +138,7 @@ module csgrt_walk_unit #(
     csgrt_walker #(
         .BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
         .MAT_BITS(MAT_BITS), .PAYLOAD_WIDTH(PAYLOAD_WIDTH),
-        .SECONDARY(SECONDARY), .LOOK_BEHIND(LOOK_BEHIND)
+        .SECONDARY(SECONDARY), .LOOK_BEHIND(LOOK_BEHIND), .LOOK_AHEAD(LOOK_AHEAD)
     ) u_walk (
         .clk_i(clk_i), .rst_ni(rst_ni),
         .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
@@ -135,7 +148,10 @@ module csgrt_walk_unit #(
         .valid_o(valid_o), .ready_i(ready_i), .hit_o(hit_o), .t_o(t_o), .leaf_o(leaf_o), .slot_o(slot_o),
         .entering_o(entering_o), .from_o(from_o), .to_o(to_o), .flags_before_o(flags_before_o),
         .payload_o(payload_o), .flags_after_o(flags_after_o), .lb_count_o(lb_count_o), .lb_slot_o(lb_slot_o),
-        .lb_entering_o(lb_entering_o), .lb_same_t_o(lb_same_t_o));
+        .lb_entering_o(lb_entering_o), .lb_same_t_o(lb_same_t_o),
+        .mat_clear_i(mat_clear_i), .q_valid_o(q_valid_o), .q_ready_i(q_ready_i), .q_t_o(q_t_o),
+        .q_leaf_o(q_leaf_o), .q_payload_o(q_payload_o), .a_valid_i(a_valid_i), .a_ready_o(a_ready_o),
+        .a_nonpos_i(a_nonpos_i));
 
 endmodule
 

@@ -25,17 +25,12 @@
 //
 // Secondary rays (SECONDARY = 1; with SECONDARY = 0 these outputs are 0 and
 // their logic is not built), beside each hit record (on a miss all 0):
-//   flags_after_o  the flags just after the hit crossing: flags_before_o
-//                  with the hit's slot toggled (the far side, for a
-//                  continuation or transmitted ray: TraceResult::flags_after
-//                  without look-ahead).
-//                  TODO: the refraction look-ahead (TraceOptions::lookahead,
-//                  docs/effects.md: behind a transparent hit, cross the
-//                  following coincident surfaces too; the hit then reads
-//                  BORDER a1,an) is not implemented; flags_after_o and
-//                  from_o/to_o ignore it until it is. (Formed from the
-//                  output registers; with the look-ahead it must be
-//                  carried in the record instead.)
+//   flags_after_o  the flags just after the hit crossing (the far side,
+//                  for a continuation or transmitted ray:
+//                  TraceResult::flags_after): with LOOK_AHEAD = 0
+//                  flags_before_o with the hit's slot toggled; with
+//                  LOOK_AHEAD = 1 the flags after the look-ahead run below,
+//                  carried in the record.
 //   lb_count_o     0..LOOK_BEHIND: the look-behind run, the valid (non-skip)
 //   lb_slot_o      tokens of the ray issued before the hit token, most
 //   lb_entering_o  recent first (TraceResult::near_run): entry k's slot at
@@ -50,6 +45,26 @@
 // the near-side children (shadow, reflected) for csgrt_event_sort, which
 // applies the look-behind fix-up; flags_after_o that of far-side ones.
 //
+// The refraction look-ahead (LOOK_AHEAD = 1, needs SECONDARY = 1;
+// TraceOptions::lookahead, algorithm.md section 6, docs/effects.md): after a
+// hit BORDER a1,a2 whose far side a2 is transparent (mat_clear_i), the
+// following events that lie at the hit's t, or whose surface the hit point
+// already lies beyond, are crossed too (validity check, classify, toggle),
+// until the far side is opaque; a crossing BORDER x,y (x != y) in the run
+// makes the far side y; the hit reads BORDER a1,an and flags_after_o are
+// the flags after the run. A run that comes back to a1 is discarded and the
+// walk goes on after it. The run's candidates are the tokens issued after
+// the hit token: each was classified, in order, against the flags with
+// every earlier valid token toggled, which is the model's run; so the
+// walker keeps issuing after such a hit and examines the following results
+// one per clock. "Beyond" (only for an event at a later t) is asked on the
+// query port: q_valid_o/q_ready_i with the hit's t (q_t_o), the event's
+// leaf (q_leaf_o) and the ray's payload (q_payload_o, by which the answerer
+// knows o and d); the answer a_valid_i/a_ready_o carries a_nonpos_i:
+// quadric_at_fx(leaf, hit_point_fx(o, d, t)) <= 0 (csgrt_quadric_at). The
+// walker, tree included, stalls until the answer is in: at most one query
+// per token, only behind transparent hits. LOOK_AHEAD = 0 builds none of it.
+//
 // Latency: a ray loaded at edge k issues its i-th event (i = 0, 1, ..) at
 // edge k+1+i (into the tree's first register); the tree's result is there
 // after edge k+i+TREE_HEIGHT and the record on valid_o (csgrt_skid) after
@@ -59,7 +74,11 @@
 // most hit index + TREE_HEIGHT + 1 on a hit; the same with SECONDARY = 1.
 // Handshake: valid/ready out through csgrt_skid; when a result is due and
 // the skid cannot take it the whole walker (tree included) stalls. No
-// combinational path from ready_i to ev_pop_o / ray_done_o.
+// combinational path from ready_i to ev_pop_o / ray_done_o. With LOOK_AHEAD
+// a ray in a run keeps issuing (its tokens after the run are dropped) and
+// a query stalls the walker until its answer (q_ready_i and a_valid_i reach
+// ev_pop_o / ray_done_o combinationally: the answerer must not depend on
+// them).
 module csgrt_walker #(
     parameter BITS          = 24,   // coordinate width B; t is B-1 bits
     parameter LEAF_BITS     = 6,    // leaf index width
@@ -67,7 +86,8 @@ module csgrt_walker #(
     parameter MAT_BITS      = 8,    // material index width
     parameter PAYLOAD_WIDTH = 1,    // per-ray sideband (>= 1)
     parameter SECONDARY     = 0,    // 1: flags_after_o and the look-behind run
-    parameter LOOK_BEHIND   = 4     // look-behind entries (kLookBehind), >= 1
+    parameter LOOK_BEHIND   = 4,    // look-behind entries (kLookBehind), >= 1
+    parameter LOOK_AHEAD    = 0     // 1: the refraction look-ahead (needs SECONDARY = 1)
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,   // synchronous, active low
@@ -104,7 +124,17 @@ module csgrt_walker #(
     output wire [$clog2(LOOK_BEHIND+1)-1:0]     lb_count_o,
     output wire [LOOK_BEHIND*TREE_HEIGHT-1:0]   lb_slot_o,
     output wire [LOOK_BEHIND-1:0]               lb_entering_o,
-    output wire [LOOK_BEHIND-1:0]               lb_same_t_o
+    output wire [LOOK_BEHIND-1:0]               lb_same_t_o,
+    // the look-ahead (LOOK_AHEAD; else q_valid_o and a_ready_o are 0)
+    input  wire [(1<<MAT_BITS)-1:0]             mat_clear_i,   // material m transparent (bit 0: air, 1)
+    output wire                     q_valid_o,
+    input  wire                     q_ready_i,
+    output wire [BITS-2:0]          q_t_o,
+    output wire [LEAF_BITS-1:0]     q_leaf_o,
+    output wire [PAYLOAD_WIDTH-1:0] q_payload_o,
+    input  wire                     a_valid_i,
+    output wire                     a_ready_o,
+    input  wire                     a_nonpos_i
 );
 
     localparam TW = BITS - 1;
@@ -120,9 +150,11 @@ module csgrt_walker #(
     // token tag: {run (SECONDARY), seq, skip, last, t, leaf, slot, entering}
     localparam BGW = 3 + TW + LB + H + 1;
     localparam GW  = BGW + RW;
-    // record: {run (SECONDARY), hit, t, leaf, slot, entering, from, to, flags_before, payload}
+    // record: {flags_after (LOOK_AHEAD), run (SECONDARY), hit, t, leaf, slot,
+    // entering, from, to, flags_before, payload}
+    localparam LA  = (SECONDARY != 0 && LOOK_AHEAD != 0) ? 1 : 0;
     localparam BOW = 1 + TW + LB + H + 1 + 2 * MB + NS + PAYLOAD_WIDTH;
-    localparam OW  = BOW + RW;
+    localparam OW  = BOW + RW + LA * NS;
 
     reg                     act_q;           // a ray is being issued
     reg                     seq_q;           // its bank
@@ -149,13 +181,16 @@ module csgrt_walker #(
     wire          live   = tv && !done_q[t_seq];
     wire          res_hit  = live && !t_skip && tc[CW-1 -: 2] == 2'd2 && c_from != c_to;
     wire          res_miss = live && !res_hit && t_last;
-    wire          res      = res_hit || res_miss;
+    // what the result stage does (the look-ahead, when built, decides):
+    // res a record goes out, fin_hit it is the ray's hit (the ray is done),
+    // la_stall the walker waits for a look-ahead answer
+    wire          res, fin_hit, la_stall;
     wire          sk_ready;
-    wire          ce = !(res && !sk_ready);
+    wire          ce = !(res && !sk_ready) && !la_stall;
 
     // ---- issue --------------------------------------------------------------
     wire [NS-1:0] fl_cur = seq_q ? fl1_q : fl0_q;
-    wire          stop   = done_q[seq_q] || (res_hit && t_seq == seq_q);
+    wire          stop   = done_q[seq_q] || (fin_hit && t_seq == seq_q);
     wire          issue  = ce && act_q && !stop;
     wire          skip   = !ev_valid_i || (fl_cur[ev_slot_i] == ev_entering_i);
     wire          last   = !ev_valid_i || ev_last_i;
@@ -223,14 +258,14 @@ module csgrt_walker #(
             end else if (ray_done_o) begin
                 act_q <= 1'b0;
             end
-            if (res_hit) done_q[t_seq] <= 1'b1;
+            if (fin_hit) done_q[t_seq] <= 1'b1;
         end
     end
 
     // ---- output ----------------------------------------------------------------
-    wire [BOW-1:0] rec_base = res_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_before,
-                                         t_seq ? pl1_q : pl0_q}
-                                      : {{(BOW-PAYLOAD_WIDTH){1'b0}}, t_seq ? pl1_q : pl0_q};
+    wire [PAYLOAD_WIDTH-1:0] t_pl = t_seq ? pl1_q : pl0_q;
+    wire [BOW-1:0] rec_base = res_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_before, t_pl}
+                                      : {{(BOW-PAYLOAD_WIDTH){1'b0}}, t_pl};
     wire [OW-1:0]  rec;
     wire [OW-1:0]  rec_o;
     csgrt_skid #(.WIDTH(OW)) u_out (
@@ -274,12 +309,116 @@ module csgrt_walker #(
                 if ((ce && load) || !rst_ni) hc_q <= {CB{1'b0}};
             end
             // the hit token's run (misses: 0) rides in the record
-            assign rec = {res_hit ? tg[GW-1:BGW] : {RW{1'b0}}, rec_base};
-            assign {lb_count_o, lb_slot_o, lb_entering_o, lb_same_t_o} = rec_o[OW-1:BOW];
-            assign flags_after_o = flags_before_o ^ ({{(NS-1){1'b0}}, hit_o} << slot_o);
+            wire [RW-1:0] lb_run = res_hit ? tg[GW-1:BGW] : {RW{1'b0}};
+            if (LA != 0) begin : g_la
+                // ---- the look-ahead run ----------------------------------------
+                reg               la_act_q;        // a run is open (for ray bank la_seq_q)
+                reg               la_seq_q;
+                reg  [TW-1:0]     la_t_q;          // the hit's t
+                reg  [MB-1:0]     la_from_q, la_to_q;
+                reg  [LB-1:0]     la_leaf_q;
+                reg  [H-1:0]      la_slot_q;
+                reg               la_ent_q;
+                reg  [NS-1:0]     la_fb_q;         // flags_before of the hit
+                reg  [PAYLOAD_WIDTH-1:0] la_pl_q;
+                reg  [RW-1:0]     la_run_q;        // the hit's look-behind run
+                reg               q_sent_q;        // the query for the token at the output is out
+                reg               ans_q, beyond_q; // its answer
+                wire [NS-1:0]     slot_bit  = {{(NS-1){1'b0}}, 1'b1} << t_slot;
+                // the token at the tree's output, examined by the open run
+                wire              run_tok   = la_act_q && live;
+                wire              same_t    = t_t == la_t_q;
+                wire              need_q    = run_tok && !same_t && !ans_q;
+                wire              decided   = run_tok && !need_q;
+                wire              member    = same_t || beyond_q;
+                wire              m_border  = !t_skip && tc[CW-1 -: 2] == 2'd2 && c_from != c_to;
+                wire [MB-1:0]     new_to    = (member && m_border) ? c_to : la_to_q;
+                wire              end_after = decided && member && (t_last || !mat_clear_i[new_to]);
+                wire              end_before= decided && !member;
+                wire              run_end   = end_after || end_before;
+                wire              cancel    = run_end && new_to == la_from_q;   // back to a1: discarded
+                wire              run_out   = run_end && !cancel;
+                // the token is walked as usual: no run open, or a run
+                // discarded just before it
+                wire              normal    = live && (!la_act_q || (end_before && cancel));
+                wire              start     = normal && res_hit && mat_clear_i[c_to] && !t_last;
+                wire              out_hit   = normal && res_hit && !start;
+                wire              out_miss  = (normal && res_miss) || (end_after && cancel && t_last);
+                assign res      = run_out || out_hit || out_miss;
+                assign fin_hit  = run_out || out_hit;
+                assign la_stall = need_q;
+                // flags after the run: before the token that ends it, or
+                // after the member that ends it
+                wire [NS-1:0]     fa_run    = end_after && !t_skip ? flags_before ^ slot_bit : flags_before;
+                wire [NS-1:0]     fa_hit    = flags_before ^ slot_bit;
+                assign rec = run_out ? {fa_run, la_run_q, 1'b1, la_t_q, la_leaf_q, la_slot_q, la_ent_q, la_from_q,
+                                        new_to, la_fb_q, la_pl_q}
+                                     : {out_hit ? fa_hit : {NS{1'b0}}, lb_run, rec_base};
+                assign flags_after_o = rec_o[OW-1 -: NS];
+                assign q_valid_o   = need_q && !q_sent_q;
+                assign q_t_o       = la_t_q;
+                assign q_leaf_o    = t_leaf;
+                assign q_payload_o = la_pl_q;
+                assign a_ready_o   = q_sent_q;
+                always @(posedge clk_i) begin
+                    if (!rst_ni) begin
+                        la_act_q <= 1'b0;
+                        q_sent_q <= 1'b0;
+                        ans_q    <= 1'b0;
+                    end else begin
+                        if (q_valid_o && q_ready_i) q_sent_q <= 1'b1;
+                        if (a_valid_i && a_ready_o) begin
+                            q_sent_q <= 1'b0;
+                            ans_q    <= 1'b1;
+                            beyond_q <= t_ent ? a_nonpos_i : !a_nonpos_i;
+                        end
+                        if (ce) begin
+                            ans_q <= 1'b0;
+                            if (run_end) la_act_q <= 1'b0;
+                            else if (decided) la_to_q <= new_to;
+                            if (start) begin
+                                la_act_q  <= 1'b1;
+                                la_seq_q  <= t_seq;
+                                la_t_q    <= t_t;
+                                la_from_q <= c_from;
+                                la_to_q   <= c_to;
+                                la_leaf_q <= t_leaf;
+                                la_slot_q <= t_slot;
+                                la_ent_q  <= t_ent;
+                                la_fb_q   <= flags_before;
+                                la_pl_q   <= t_pl;
+                                la_run_q  <= lb_run;
+                            end
+                        end
+                    end
+                end
+                wire unused_la = la_seq_q;   // every live token of an open run is its ray's
+            end else begin : g_no_la
+                assign res      = res_hit || res_miss;
+                assign fin_hit  = res_hit;
+                assign la_stall = 1'b0;
+                assign rec = {lb_run, rec_base};
+                assign flags_after_o = flags_before_o ^ ({{(NS-1){1'b0}}, hit_o} << slot_o);
+                assign q_valid_o   = 1'b0;
+                assign q_t_o       = {TW{1'b0}};
+                assign q_leaf_o    = {LB{1'b0}};
+                assign q_payload_o = {PAYLOAD_WIDTH{1'b0}};
+                assign a_ready_o   = 1'b0;
+                wire unused_la = ^{mat_clear_i, q_ready_i, a_valid_i, a_nonpos_i};
+            end
+            assign {lb_count_o, lb_slot_o, lb_entering_o, lb_same_t_o} = rec_o[BOW +: RW];
         end else begin : g_pri
             assign tag_in        = tag_base;
             assign rec           = rec_base;
+            assign res           = res_hit || res_miss;
+            assign fin_hit       = res_hit;
+            assign la_stall      = 1'b0;
+            assign q_valid_o     = 1'b0;
+            assign q_t_o         = {TW{1'b0}};
+            assign q_leaf_o      = {LB{1'b0}};
+            assign q_payload_o   = {PAYLOAD_WIDTH{1'b0}};
+            assign a_ready_o     = 1'b0;
+            wire unused_la = ^{mat_clear_i, q_ready_i, a_valid_i, a_nonpos_i};
             assign flags_after_o = {NS{1'b0}};
             assign lb_count_o    = {CB{1'b0}};
             assign lb_slot_o     = {(LBK*H){1'b0}};
@@ -289,9 +428,9 @@ module csgrt_walker #(
     endgenerate
 
     generate
-        if (H < 2 || LOOK_BEHIND < 1) begin : g_bad_param
+        if (H < 2 || LOOK_BEHIND < 1 || (LOOK_AHEAD != 0 && SECONDARY == 0)) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_walker needs TREE_HEIGHT >= 2 and LOOK_BEHIND >= 1");
+                $display("ERROR %m: csgrt_walker needs TREE_HEIGHT >= 2, LOOK_BEHIND >= 1, SECONDARY = 1 for LOOK_AHEAD");
                 $finish;
             end
         end

@@ -172,6 +172,15 @@ std::vector<Scenario> scenarios(int bits) {
     return v;
 }
 
+// The model's trace options: WalkLookAhead.* turns the refraction
+// look-ahead on (TraceOptions::lookahead), everything else runs without.
+bool g_lookahead = false;
+TraceOptions model_options() {
+    TraceOptions o;
+    o.lookahead = g_lookahead;
+    return o;
+}
+
 std::vector<RayCase> make_rays(const CompiledScene& cs, TiePolicy ties, int grid_x, int grid_y, int n_random,
                                uint64_t seed) {
     std::vector<RayCase> out;
@@ -181,7 +190,7 @@ std::vector<RayCase> make_rays(const CompiledScene& cs, TiePolicy ties, int grid
         c.ray = r;
         try {
             for (const LeafInfo& l : cs.leaves) c.le.push_back(intersect_fx(fmt, l.coef, r));
-            c.want = trace_primary_fx(cs, r, ties, true);
+            c.want = trace_primary_fx(cs, r, ties, true, model_options());
         } catch (const std::logic_error&) {
             return;   // outside the model's bounds
         }
@@ -523,8 +532,25 @@ struct SecRec {
         return r;                                                                                             \
     }
 
-struct S16 { WALK_MEMBERS(s16, 16) SEC_MEMBERS(s16, 16) };
-struct S24 { WALK_MEMBERS(s24, 24) SEC_MEMBERS(s24, 24) };
+// the look-ahead's configuration and query port (l16, l24)
+#define LA_MEMBERS(X, B)                                                                                      \
+    static constexpr bool kLA = true;                                                                         \
+    void mat_clear(const CompiledScene& cs) {                                                                 \
+        for (int m = 0; m < 256; ++m) put(t->X##_mat_clear_i, m, 1, m < int(cs.materials.size()) && is_transparent(cs, m)); \
+    }                                                                                                         \
+    bool q_valid() { return t->X##_q_valid_o; }                                                               \
+    uint8_t* q_ready() { return &t->X##_q_ready_i; }                                                          \
+    i64 q_t() { return tb::sext(t->X##_q_t_o, B - 1); }                                                       \
+    int q_leaf() { return int(t->X##_q_leaf_o); }                                                             \
+    uint32_t q_payload() { return t->X##_q_payload_o; }                                                       \
+    uint8_t* a_valid() { return &t->X##_a_valid_i; }                                                          \
+    bool a_ready() { return t->X##_a_ready_o; }                                                               \
+    uint8_t* a_nonpos() { return &t->X##_a_nonpos_i; }
+
+struct S16 { static constexpr bool kLA = false; WALK_MEMBERS(s16, 16) SEC_MEMBERS(s16, 16) };
+struct S24 { static constexpr bool kLA = false; WALK_MEMBERS(s24, 24) SEC_MEMBERS(s24, 24) };
+struct L16 { WALK_MEMBERS(l16, 16) SEC_MEMBERS(l16, 16) LA_MEMBERS(l16, 16) };
+struct L24 { WALK_MEMBERS(l24, 24) SEC_MEMBERS(l24, 24) LA_MEMBERS(l24, 24) };
 
 std::vector<Scenario> sec_scenarios(int bits) {
     std::vector<Scenario> v = scenarios(bits);
@@ -550,7 +576,7 @@ std::vector<RayCase> edge_rays(const CompiledScene& cs, TiePolicy ties, int n_pa
     const int F = cs.fmt.frac;
     auto leaf_of = [&](const RayFx& r) {
         try {
-            const TraceResult<i64> tr = trace_primary_fx(cs, r, ties);
+            const TraceResult<i64> tr = trace_primary_fx(cs, r, ties, false, model_options());
             return tr.hit ? tr.leaf : -1;
         } catch (const std::logic_error&) {
             return -2;
@@ -579,7 +605,7 @@ std::vector<RayCase> edge_rays(const CompiledScene& cs, TiePolicy ties, int n_pa
             c.ray = r;
             try {
                 for (const LeafInfo& l : cs.leaves) c.le.push_back(intersect_fx(cs.fmt, l.coef, r));
-                c.want = trace_primary_fx(cs, r, ties, true);
+                c.want = trace_primary_fx(cs, r, ties, true, model_options());
             } catch (const std::logic_error&) {
                 continue;
             }
@@ -627,7 +653,7 @@ std::vector<SecCase> make_sec_cases(const CompiledScene& cs, TiePolicy ties, int
             c.secondary = true;
             c.ray.o = p;
             c.ray.d = d;
-            TraceOptions opt;
+            TraceOptions opt = model_options();
             opt.t_limit_fx = t_limit;
             c.tlimit = t_limit < (i64(1) << (F + 1)) ? uint64_t(t_limit) : 0;
             const bool near = kind != 3;
@@ -727,6 +753,7 @@ struct SecStats {
     uint64_t rays[5] = {}, hits[5] = {}, undo = 0, undo_by_c = 0, undo_changes = 0, limited = 0;
     uint64_t random_undo = 0, random_twice = 0, limit_on_event = 0;
     uint64_t cycles = 0, leaves = 0, events = 0, popped = 0, info_stalls = 0;
+    uint64_t queries = 0, beyond = 0;   // look-ahead queries answered, of them "beyond"
 };
 
 template <class S>
@@ -756,6 +783,16 @@ void run_sec(const Scenario& sc, TiePolicy ties, const std::vector<SecCase>& ray
         *sp.clk = 0;
         h.top->eval();
     };
+    // the look-ahead's answerer: a query is taken (after random waits),
+    // answered by the model's beyond test (quadric_at_fx at hit_point_fx
+    // of the ray the payload names) after a random delay, held until taken
+    bool q_busy = false, a_on = false, a_nonpos = false;
+    int a_delay = 0;
+    if constexpr (S::kLA) {
+        p.mat_clear(cs);
+        *p.q_ready() = 0;
+        *p.a_valid() = 0;
+    }
     *sp.valid_i = 0;
     *sp.ready_i = 0;
     *p.info_valid() = 0;
@@ -786,10 +823,37 @@ void run_sec(const Scenario& sc, TiePolicy ties, const std::vector<SecCase>& ray
             p.cpos(rays[r].le[l].c > 0);
         }
         *sp.ready_i = !(u01(rng) < p_stall);
+        if constexpr (S::kLA) {
+            *p.q_ready() = !q_busy && !(u01(rng) < p_stall);
+            *p.a_valid() = a_on;
+            *p.a_nonpos() = a_nonpos;
+        }
         h.top->eval();
         const bool in_fire = *sp.valid_i && *sp.ready_o;
         const bool out_fire = *sp.valid_o && *sp.ready_i;
         const bool info_fire = info_on && p.info_ready();
+        if constexpr (S::kLA) {
+            if (a_on && p.a_ready()) {
+                a_on = false;
+                q_busy = false;
+            }
+            if (q_busy && !a_on && --a_delay <= 0) a_on = true;
+            if (p.q_valid() && *p.q_ready()) {
+                const uint32_t r = p.q_payload();
+                std::array<i64, 3> hp{};
+                if (r < rays.size()) {
+                    hit_point_fx(cs.fmt, rays[r].ray, p.q_t(), hp);
+                    const int leaf = p.q_leaf();
+                    a_nonpos = leaf < n && quadric_at_fx(cs.fmt, cs.leaves[leaf].coef, hp) <= 0;
+                } else {
+                    ADD_FAILURE() << tag << ": a look-ahead query for ray " << r;
+                }
+                q_busy = true;
+                a_delay = int(rng() % 4 == 0 ? rng() % 24 : 0);
+                ++st.queries;
+                st.beyond += a_nonpos;   // counted by sign; "beyond" depends on the event's sense
+            }
+        }
         // the info handshake: a leaf goes in only with its ray's record, the
         // record is popped exactly with the ray's last leaf
         const bool last_fire = in_fire && int(sent % n) == n - 1;
@@ -982,6 +1046,101 @@ void run_sec_all(uint64_t seed) {
 
 TEST(WalkSecondary, Bits16) { run_sec_all<S16>(tb::seed(1610)); }
 TEST(WalkSecondary, Bits24) { run_sec_all<S24>(tb::seed(2410)); }
+
+// ---------------------------------------------------------------------------
+// The refraction look-ahead: the LOOK_AHEAD = 1 build (l16, l24) against the
+// model with TraceOptions::lookahead, on transparent scenes with coincident
+// surfaces (and an opaque one: nothing may change there), primary rays and
+// all their children as in WalkSecondary; the bench answers the walker's
+// "beyond" queries with the model's own test.
+
+const char* kGlassInline[][2] = {
+    {"glass_box_twice",
+     "union { box { <-1,-1,-1>, <1,1,1> pigment { color rgbf <1,0.5,0.5,0.8> } interior { ior 1.5 } }\n"
+     "        box { <-1,-1,-1>, <1,1,1> pigment { color rgbf <0.5,1,0.5,0.7> } interior { ior 1.3 } } }\n"},
+    {"glass_lamina",
+     "difference { sphere { <0,0,0>, 1 pigment { color rgbf <1,1,1,0.9> } interior { ior 1.4 } }\n"
+     "             sphere { <0,0,0>, 1 pigment { color rgbf <1,1,1,0.9> } interior { ior 1.4 } } }\n"},
+    {"touching_glass_boxes",
+     "union { box { <-1,-1,-1>, <0,1,1> pigment { color rgbf <1,0.6,0.6,0.8> } interior { ior 1.5 } }\n"
+     "        box { <0,-1,-1>, <1,1,1> pigment { color rgbf <0.6,0.6,1,0.6> } interior { ior 1.2 } }\n"
+     "        box { <-0.5,-1,-0.5>, <0.5,0,0.5> pigment { color rgb <1,1,0> } } }\n"},
+    {"glass_minus_flush_cylinder",
+     "difference { box { <-1,-1,-1>, <1,1,1> pigment { color rgbf <0.7,0.7,1,0.8> } interior { ior 1.5 } }\n"
+     "             cylinder { <0,-1,0>, <0,1,0>, 0.5 pigment { color rgbf <1,1,1,0.5> } interior { ior 1.1 } } }\n"},
+};
+
+std::vector<Scenario> la_scenarios(int bits) {
+    std::vector<Scenario> v;
+    for (const char* f : {"glass", "nested_glass", "default"})
+        v.push_back({f, compile(parse_scene_file(std::string("scenes/") + f + ".pov"), bits)});
+    for (const char* f : {"fig13_coincident_transparent", "fig16_transparency"})
+        v.push_back({f, compile(parse_scene_file(std::string("scenes/paper/") + f + ".pov"), bits)});
+    for (auto& s : kGlassInline) {
+        const std::string text = std::string("camera { location <0.7, 2.3, -5> look_at <0, 0, 0> }\n"
+                                             "light_source { <-4, 6, -5> color rgb <1, 1, 1> }\n") + s[1];
+        v.push_back({s[0], compile(parse_scene_string(text, std::string(s[0]) + ".pov"), bits)});
+    }
+    return v;
+}
+
+// What the look-ahead changed, by the model: hits whose BORDER to or far-side
+// flags differ from the crossing alone, and rays whose hit it discarded or
+// moved.
+struct LaEffect {
+    uint64_t moved_to = 0, moved_flags = 0, hit_changed = 0;
+};
+LaEffect la_effect(const CompiledScene& cs, TiePolicy ties, const std::vector<SecCase>& rays) {
+    LaEffect e;
+    for (const SecCase& c : rays) {
+        if (c.kind != 0) continue;
+        const TraceResult<i64>& a = c.want;
+        const TraceResult<i64> b = trace_primary_fx(cs, c.ray, ties, true);   // no look-ahead
+        if (a.hit != b.hit || (a.hit && (a.t != b.t || a.leaf != b.leaf))) {
+            ++e.hit_changed;
+            continue;
+        }
+        if (!a.hit) continue;
+        e.moved_to += a.border.to != b.border.to;
+        e.moved_flags += a.flags_after != b.flags_after;
+    }
+    return e;
+}
+
+template <class S>
+void run_la_all(uint64_t seed) {
+    g_lookahead = true;
+    const std::vector<Scenario> scs = la_scenarios(S::kBits);
+    LaEffect total;
+    uint64_t queries = 0, beyond = 0;
+    for (TiePolicy ties : {TiePolicy::Paper, TiePolicy::Regular}) {
+        for (const Scenario& sc : scs) {
+            const auto rays = make_sec_cases(sc.cs, ties, scaled(12), scaled(9), scaled(80), scaled(24), seed++, true);
+            SecStats st;
+            run_sec<S>(sc, ties, rays, 0.2, 0.3, 0.3, seed++, st);
+            const LaEffect e = la_effect(sc.cs, ties, rays);
+            total.moved_to += e.moved_to;
+            total.moved_flags += e.moved_flags;
+            total.hit_changed += e.hit_changed;
+            queries += st.queries;
+            beyond += st.beyond;
+            std::printf("walk LOOK_AHEAD BITS=%d %s %s: %zu rays; the look-ahead moved BORDER to on %llu primary "
+                        "hits, the far-side flags on %llu, the hit itself on %llu; %llu queries (%llu with q <= 0)\n",
+                        S::kBits, sc.name.c_str(), ties == TiePolicy::Paper ? "paper" : "regular", rays.size(),
+                        (unsigned long long)e.moved_to, (unsigned long long)e.moved_flags,
+                        (unsigned long long)e.hit_changed, (unsigned long long)st.queries,
+                        (unsigned long long)st.beyond);
+        }
+    }
+    g_lookahead = false;
+    // the look-ahead must have done something, or the test proves nothing
+    EXPECT_GT(total.moved_to, 0u);
+    EXPECT_GT(total.moved_flags, 0u);
+    EXPECT_GT(queries, 0u);
+}
+
+TEST(WalkLookAhead, Bits16) { run_la_all<L16>(tb::seed(1620)); }
+TEST(WalkLookAhead, Bits24) { run_la_all<L24>(tb::seed(2420)); }
 
 // Back to back with the info stream always valid: primary rays as in
 // Walk.BackToBack (clocks per ray must match SECONDARY = 0), then with
