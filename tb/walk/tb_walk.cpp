@@ -1,8 +1,10 @@
 // tb_walk.cpp — csgrt_walk_unit (csgrt_event_sort + csgrt_walker) against
 // trace_primary_fx() (model/trace.cpp): Walk.* with SECONDARY = 0 (as in
-// csgrt_top), and WalkSecondary.* with SECONDARY = 1 against
+// csgrt_top), WalkSecondary.* with SECONDARY = 1 against
 // trace_primary_fx() and trace_secondary_fx() on child rays (see the
-// section "Secondary rays" below).
+// section "Secondary rays" below), and WalkLookAhead.* with LOOK_AHEAD = 1
+// against the same with the refraction look-ahead (TraceOptions::lookahead;
+// the section "The refraction look-ahead").
 //
 // Scenes: scenes/*.pov and inline coincident-surface scenes (the same box
 // twice, a box minus a flush cylinder, touching boxes, a sphere minus
