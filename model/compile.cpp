@@ -346,8 +346,10 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
     // 1. Flatten the tree; the top level is an implicit union.
     Flattener fl;
     fl.max_leaves = opt.max_leaves;
+    std::vector<int> leaf_object;   // LeafInfo::object
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         fl.object(scene.objects[i], glm::dmat4(1.0), Pigment{}, Finish{}, Interior{});
+        leaf_object.resize(fl.leaves.size(), int(i));
         if (i > 0) fl.program.push_back({Op::ADD, 0});
     }
     // 2. The frame: camera, lights and finite primitives into a cube of half
@@ -408,6 +410,7 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
         li.material = pl.material;
         li.pos = pl.pos;
         li.what = pl.what;
+        li.object = leaf_object[cs.leaves.size()];
         cs.leaves.push_back(li);
         cs.leaf_material.push_back(uint8_t(pl.material));
     }

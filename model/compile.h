@@ -47,6 +47,7 @@ struct LeafInfo {
     int material = 1;              // 1-based; 0 is air
     SourcePos pos;                 // the primitive's source position
     std::string what;              // e.g. "box (face -x)"
+    int object = 0;                // the top-level object (index into Scene::objects) it belongs to
 };
 
 struct MaterialInfo {

@@ -3,7 +3,11 @@
 // Their tops lie in the same plane (y = 1) and they overlap, so a ray aimed
 // at the top of B also strikes the (infinite) top plane of A at the same t.
 // Each top must show its own material: red A, green B; where they overlap the
-// tie policy decides (paper: A, regular: B, the right operand).
+// tie policy decides, and both decide A: paper strikes the lower leaf first
+// (A's top cutter, leaf 1, before B's, leaf 4); regular leaves coincident
+// half-spaces in ascending leaf order, and the tops are where the ray
+// leaves the two top cutters, so A's cutter is left first there too
+// (ref/fig04_ghost_regular.pov derives it).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
