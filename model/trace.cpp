@@ -291,7 +291,11 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             size_t j = i + 1;
             for (; lookahead && is_transparent(cs, res.border.to) && j < ahead.size(); ++j) {
                 const Event<T>& n = ahead[j];
-                if (!(n.t == e.t || beyond(n, e.t))) break;
+                // The hit point lies on the hit leaf's own surface, where the
+                // sign of its Q is rounding noise: the hit leaf's own later
+                // events (a sphere's far side) join the run only at the
+                // same t.
+                if (!(n.t == e.t || (n.leaf != e.leaf && beyond(n, e.t)))) break;
                 if (n.t != e.t) t_lookahead_passed_later = true;   // for the culling's check (cull.h)
                 if (bool(flags[n.leaf]) == n.entering) continue;   // invalid: skipped
                 const Class c2 = tree.classify(n.leaf, n.entering);

@@ -90,7 +90,8 @@ struct TraceResult {
 //    material with filter > 0), cross the following coincident surfaces too
 //    (algorithm.md section 6): while the next event has the same t, or the
 //    hit point already lies beyond that next surface (exact sign of its
-//    quadric at the hit point), apply the validity check, classify, toggle;
+//    quadric at the hit point; never for the hit leaf's own events, whose
+//    surface the hit point lies on), apply the validity check, classify, toggle;
 //    stop at an opaque material. The hit then reads BORDER a1, an and
 //    flags_after are the flags beyond the whole run.
 // The look-behind (docs/effects.md) undoes at most this many crossings

@@ -49,7 +49,8 @@
 // TraceOptions::lookahead, algorithm.md section 6, docs/effects.md): after a
 // hit BORDER a1,a2 whose far side a2 is transparent (mat_clear_i), the
 // following events that lie at the hit's t, or whose surface the hit point
-// already lies beyond, are crossed too (validity check, classify, toggle),
+// already lies beyond (never asked for the hit leaf's own events: the hit
+// point lies on that surface), are crossed too (validity check, classify, toggle),
 // until the far side is opaque; a crossing BORDER x,y (x != y) in the run
 // makes the far side y; the hit reads BORDER a1,an and flags_after_o are
 // the flags after the run. A run that comes back to a1 is discarded and the
@@ -328,9 +329,12 @@ module csgrt_walker #(
                 // the token at the tree's output, examined by the open run
                 wire              run_tok   = la_act_q && live;
                 wire              same_t    = t_t == la_t_q;
-                wire              need_q    = run_tok && !same_t && !ans_q;
+                // the hit leaf's own later events join only at the same t:
+                // the hit point lies on its surface (no query for them)
+                wire              own_leaf  = t_leaf == la_leaf_q;
+                wire              need_q    = run_tok && !same_t && !own_leaf && !ans_q;
                 wire              decided   = run_tok && !need_q;
-                wire              member    = same_t || beyond_q;
+                wire              member    = same_t || (!own_leaf && beyond_q);
                 wire              m_border  = !t_skip && tc[CW-1 -: 2] == 2'd2 && c_from != c_to;
                 wire [MB-1:0]     new_to    = (member && m_border) ? c_to : la_to_q;
                 wire              end_after = decided && member && (t_last || !mat_clear_i[new_to]);
