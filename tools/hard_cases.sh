@@ -120,14 +120,15 @@ shows):
   hit leaf, and its normal, internal to the union, sends the shadow or
   reflected ray into the union. Colour and classification are right; the
   normal is not. Reported as "at edge ties".
-- **Own-leaf look-ahead (Fig. 16, every width).** After a hit on a
-  transparent surface the look-ahead crosses the next event while "the hit
-  point already lies beyond that surface", the sign of its Q at the rounded
-  hit point. For the hit leaf's own far side that sign is rounding noise:
-  where the rounded entry point lies just outside the sphere, the run
-  crosses the whole glass sphere, returns to air, and the hit is dropped
-  (the ray passes through the sphere unrefracted). Reported as "own-leaf
-  look-ahead".
+- **Own-leaf look-ahead (fixed).** The medium check found that the
+  look-ahead's "the hit point already lies beyond that surface" (the sign
+  of its Q at the rounded hit point) was also asked for the hit leaf's own
+  far side, where that sign is rounding noise: where the rounded entry
+  point lay just outside a glass sphere the run crossed the whole sphere
+  and the ray passed through unrefracted (Fig. 16 at 16 to 32 bits). The
+  hit leaf's own events now join a run only at the same t (model and RTL
+  walker); the column "own-leaf look-ahead" stays as a check that it is
+  0.
 - **Fig. 13 with refraction on** (not a count): the renderer's look-ahead
   shades a run of coincident transparent faces with the run's last material,
   so the shared front of Fig. 13 shows the innermost box's pigment under
