@@ -107,29 +107,31 @@ $(BUILD)/tb/frame%: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,$*,tb/frame/tb_frame.cpp,-DFRAME_BITS=$* -DFRAME_UNITS=1,-lgtest -lgtest_main,1)
 $(BUILD)/tb/frame24u2: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=2,-lgtest -lgtest_main,2)
-# with the shadow and reflection units (the ray tree)
-FX_UNITS := -GSHADOWS=1 -GREFLECTION=1
+# with every effect unit (the ray tree: shadows, reflection, refraction)
+FX_UNITS := -GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1
+FX_DEFS  := -DFRAME_UNITS=1 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=1
 $(BUILD)/tb/frame16fx: $(FRAME_DEPS) | deps
-	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 -DFRAME_UNITS=1 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1,-lgtest -lgtest_main,1,$(FX_UNITS))
+	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS))
 $(BUILD)/tb/frame24fx: $(FRAME_DEPS) | deps
-	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=1 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1,-lgtest -lgtest_main,1,$(FX_UNITS))
+	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS))
 
 # make sim: the project's main job. The build has the effect units the
 # scene uses (`csgrt units`), or all of them (EFFECTS=all), or none; each
 # combination is its own cached Verilator build.
 SHADOWS    ?= 0
 REFLECTION ?= 0
-SIM_FX  = s$(SHADOWS)r$(REFLECTION)
+REFRACTION ?= 0
+SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)
 SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
 $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION))
+	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION))
 
 sim: model
-	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0,$$($(BUILD)/csgrt units $(SCENE))))" \
-	    && if [ "$(UNITS)" != 1 ] && [ "$$units" != "SHADOWS=0 REFLECTION=0" ]; then \
+	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1 REFRACTION=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0 REFRACTION=0,$$($(BUILD)/csgrt units $(SCENE))))" \
+	    && if [ "$(UNITS)" != 1 ] && [ "$$units" != "SHADOWS=0 REFLECTION=0 REFRACTION=0" ]; then \
 	        echo "make sim: the effect units work with one intersection lane for now: UNITS=$(UNITS) builds primary rays only"; \
-	        units="SHADOWS=0 REFLECTION=0"; fi \
+	        units="SHADOWS=0 REFLECTION=0 REFRACTION=0"; fi \
 	    && echo "make sim: effect units $$units (EFFECTS=$(EFFECTS))" \
 	    && $(MAKE) --no-print-directory sim-run $$units
 

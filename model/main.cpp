@@ -24,7 +24,7 @@ const char* kUsage =
     "  csgrt compile SCENE.pov -o OUT.bin [options]  write the binary scene image (and OUT.hex)\n"
     "  csgrt info SCENE.pov [options]                print the compiled scene\n"
     "  csgrt units SCENE.pov                         the RTL effect units the scene needs, as make\n"
-    "                                                variables (SHADOWS=0|1 REFLECTION=0|1)\n"
+    "                                                variables (SHADOWS=0|1 REFLECTION=0|1 REFRACTION=0|1)\n"
     "  csgrt stability [--quick] [--transforms N] [--case NAME] [--md FILE]\n"
     "                                                the hard-case stability suite (model/stability.h)\n"
     "options:\n"
@@ -132,10 +132,8 @@ int main(int argc, char** argv) {
         const CompiledScene cs = compile_scene(scene, a.copt);
         if (a.cmd == "units") {
             const EffectSet fx = scene_effects(cs);
-            std::printf("SHADOWS=%d REFLECTION=%d\n", int(fx.shadows), int(fx.reflection));
-            if (fx.refraction)
-                std::fprintf(stderr, "csgrt: %s uses refraction, which the RTL does not have yet: its simulation "
-                                     "renders it without\n", a.scene.c_str());
+            std::printf("SHADOWS=%d REFLECTION=%d REFRACTION=%d\n", int(fx.shadows), int(fx.reflection),
+                        int(fx.refraction));
             return 0;
         }
         if (a.cmd == "info") {

@@ -157,13 +157,14 @@ EffectSet scene_effects(const CompiledScene& cs) {
     return e;
 }
 
-EffectSet rtl_effects(const CompiledScene& cs, bool shadows, bool reflection) {
+EffectSet rtl_effects(const CompiledScene& cs, bool shadows, bool reflection, bool refraction) {
     const EffectSet scene = scene_effects(cs);
     EffectSet e;
     e.specular = scene.specular;
     e.shadows = shadows && scene.shadows;
     e.reflection = reflection && scene.reflection;
-    e.depth = e.reflection ? cs.max_trace_level : 1;
+    e.refraction = refraction && scene.refraction;
+    e.depth = (e.reflection || e.refraction) ? cs.max_trace_level : 1;
     return e;
 }
 

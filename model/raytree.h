@@ -20,10 +20,11 @@ namespace csgrt {
 EffectSet scene_effects(const CompiledScene& cs);
 
 // The effects an RTL build renders for a scene: local shading (phong
-// included) always, shadows and reflection when the build has those units
-// (csgrt_top's SHADOWS, REFLECTION) and the scene uses them; refraction is
-// not in the RTL yet. Co-simulation renders the model with these.
-EffectSet rtl_effects(const CompiledScene& cs, bool shadows = false, bool reflection = false);
+// included) always, shadows, reflection and refraction when the build has
+// those units (csgrt_top's SHADOWS, REFLECTION, REFRACTION) and the scene
+// uses them. Co-simulation renders the model with these.
+EffectSet rtl_effects(const CompiledScene& cs, bool shadows = false, bool reflection = false,
+                      bool refraction = false);
 
 // Geometry of secondary rays (F fraction bits, docs/effects.md):
 // square-root stages for unit vectors of geometry vectors with |v_i| < 128

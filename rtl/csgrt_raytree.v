@@ -1,5 +1,5 @@
 `default_nettype none
-// csgrt_raytree — the ray scheduler for shadows and reflection: it traces
+// csgrt_raytree — the ray scheduler for shadows, reflection and refraction: it traces
 // each pixel's ray tree through the intersection lanes, bit for bit
 // accumulate_fx() of model/raytree.cpp (docs/effects.md, docs/architecture.md).
 //
@@ -9,8 +9,9 @@
 //
 //   trace -> miss (or a hit point out of range): add rnd(w background)
 //         -> hit: ask csgrt_spawn for the hit's children (a shadow ray per
-//            light, the reflected ray); shadow rays go to the lanes, the
-//            reflected ray onto the context's stack; when every shadow ray
+//            light, the transmitted ray or its total internal reflection,
+//            the reflected ray); shadow rays go to the lanes, the others
+//            onto the context's stack; when every shadow ray
 //            has come back (each leaves the light's colour scaled by what
 //            got through, or 0), the hit is shaded (csgrt_shade with those
 //            light colours, csgrt_contrib) and rnd(w L) is added
@@ -24,8 +25,9 @@
 // most one colour ray or MAX_LIGHTS shadow rays in flight, so the ray FIFO
 // (RAY_FIFO >= CONTEXTS * max(1, MAX_LIGHTS)) never refuses a ray; the
 // spawn request FIFO holds one request per context; a context's stack
-// holds at most one pending sibling per level (MAX_DEPTH >= the scene's
-// max_trace_level, which the compiler checks). Every input is taken as it
+// holds at most one pending sibling per level below the current hit plus
+// that hit's two children: at most max_trace_level entries (MAX_DEPTH >= the
+// scene's max_trace_level, which the compiler checks). Every input is taken as it
 // comes except when a ray or request has nowhere to go, which the bounds
 // rule out.
 //
@@ -42,6 +44,7 @@ module csgrt_raytree #(
     parameter LOOK_BEHIND = 4,
     parameter SHADOWS     = 1,
     parameter REFLECTION  = 1,
+    parameter REFRACTION  = 0,       // transmitted rays (the walker's look-ahead is csgrt_top's)
     parameter DIST_W      = 27,      // shadow distance width (csgrt_spawn's m_dist_o)
     parameter MAT_W       = 154,     // material record (csgrt_scene_loader)
     parameter COL_W       = 31,      // csgrt_shade's linear colour
@@ -94,6 +97,8 @@ module csgrt_raytree #(
     input  wire [NS-1:0]             tr_flags_near_i,  // flags just before the hit crossing
     input  wire [RUN_W-1:0]          tr_run_i,         // the look-behind run
     input  wire [NS-1:0]             tr_flags_after_i,
+    input  wire [15:0]               tr_ior_from_i,    // ior_of(BORDER from), ior_of(BORDER to) (REFRACTION)
+    input  wire [15:0]               tr_ior_to_i,
     // spawn requests (csgrt_spawn)
     output wire                      sp_valid_o,
     input  wire                      sp_ready_i,
@@ -103,6 +108,9 @@ module csgrt_raytree #(
     output wire [10*BITS-1:0]        sp_coef_o,
     output wire [MAX_LIGHTS-1:0]     sp_lights_o,
     output wire                      sp_reflect_o,
+    output wire                      sp_refract_o,
+    output wire [15:0]               sp_ior_from_o,
+    output wire [15:0]               sp_ior_to_o,
     output wire [CB-1:0]             sp_user_o,
     // spawned children
     input  wire                      ch_valid_i,
@@ -153,8 +161,8 @@ module csgrt_raytree #(
     localparam RAY_FIFO = 2 << $clog2(RAY_FIFO_MIN);
     localparam [15:0] ONE = 16'd4096;
     // csgrt_spawn's child kinds (rtl/csgrt_spawn.v)
-    // (CONTINUE 0, REFRACT 2 and TIR_REFLECT 3 are not asked for in this configuration)
-    localparam [2:0] K_SHADOW = 3'd1, K_REFLECT = 3'd4;
+    // (CONTINUE 0 is not asked for: shadow rays continue through csgrt_hit_prep)
+    localparam [2:0] K_SHADOW = 3'd1, K_REFRACT = 3'd2, K_TIR = 3'd3, K_REFLECT = 3'd4;
     // material record fields (csgrt_scene_loader)
     localparam M_RGB = 0, M_REFL = 96, M_FILTER = 122;
 
@@ -190,6 +198,9 @@ module csgrt_raytree #(
     reg [10*B-1:0]     hcoef_q [0:P-1];
     reg [MAT_W-1:0]    hmat_q  [0:P-1];
     reg [NS-1:0]       near_q  [0:P-1];
+    reg [NS-1:0]       after_q [0:P-1];   // far side: the transmitted child's flags
+    reg [47:0]         wt_q    [0:P-1];   // the transmitted child's weight
+    reg [P-1:0]        tx_q;              // the hit has a transmitted child
     reg [RUN_W-1:0]    run_q   [0:P-1];
     // the light colours for shading, scaled by the shadow rays
     reg [47:0]         lcol_q  [0:(P << KW)-1];
@@ -208,7 +219,7 @@ module csgrt_raytree #(
 
     // ---- sources -------------------------------------------------------------------------
     // traced rays through csgrt_hit_prep
-    localparam TREC_W = REC_W + 6 * B + 10 * B + MAT_W + NS + RUN_W + NS + 1 + TW;
+    localparam TREC_W = REC_W + 6 * B + 10 * B + MAT_W + NS + RUN_W + NS + 1 + TW + 32;
     wire               hp_valid;
     wire               hp_ready;
     wire [TREC_W-1:0]  hp_rec;
@@ -232,7 +243,8 @@ module csgrt_raytree #(
         .s_hit_i (tr_hit_i), .s_t_i (tr_t_i), .s_to_air_i (tr_to_i == 8'd0),
         .s_rgb_i (tr_mat_i[M_RGB +: 48]), .s_filter_i (tr_mat_i[M_FILTER +: 16]),
         .s_reflection_i (tr_mat_i[M_REFL +: 16]),
-        .s_rec_i ({tr_t_i, tr_hit_i, tr_flags_after_i, tr_run_i, tr_flags_near_i, tr_mat_i, tr_coef_i, tr_o_i, tr_d_i, tr_rec_i}),
+        .s_rec_i ({tr_ior_to_i, tr_ior_from_i, tr_t_i, tr_hit_i, tr_flags_after_i, tr_run_i, tr_flags_near_i, tr_mat_i,
+                   tr_coef_i, tr_o_i, tr_d_i, tr_rec_i}),
         .m_valid_o (hp_valid), .m_ready_i (hp_ready), .m_rec_o (hp_rec),
         .m_p_o (hp_p), .m_in_range_o (hp_in_range), .m_bg_o (hp_bg), .m_w_r_o (hp_w_r), .m_w_t_o (hp_w_t),
         .m_sh_ends_o (hp_sh_ends), .m_sh_color_o (hp_sh_color), .m_sh_atten_o (hp_sh_atten),
@@ -247,13 +259,15 @@ module csgrt_raytree #(
     wire [NS-1:0]     h_after  = hp_rec[REC_W + 16*B + MAT_W + NS + RUN_W +: NS];
     wire              h_hit    = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W];
     wire [TW-1:0]     h_t      = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 +: TW];
+    wire [15:0]       h_ior_from = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 + TW +: 16];
+    wire [15:0]       h_ior_to   = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 + TW + 16 +: 16];
     wire              h_shadow = h_rec[0];
     wire [CB-1:0]     h_ctx    = h_rec[1 +: CB];
     wire [KW-1:0]     h_light  = h_rec[1 + CB +: KW];
     wire [47:0]       h_w      = h_rec[1 + CB + KW +: 48];
     wire [3:0]        h_depth  = h_rec[1 + CB + KW + 48 +: 4];
     wire [4:0]        h_cross  = h_rec[1 + CB + KW + 100 +: 5];
-    wire unused_hp = ^{hp_w_t, h_rec[REC_W-1 -: DIST_W], h_rec[1 + CB + KW + 52 +: 48]};
+    wire unused_hp = ^{h_rec[REC_W-1 -: DIST_W], h_rec[1 + CB + KW + 52 +: 48]};
 
     // contributions of shaded rays
     wire              ct_valid;
@@ -268,7 +282,7 @@ module csgrt_raytree #(
         sr_spec_x[c*COL_W +: COL_W] = {{(COL_W-SPEC_W){1'b0}}, sr_spec_i[c*SPEC_W +: SPEC_W]};
     csgrt_contrib #(.COL_W(COL_W), .TAG_W(CB)) u_contrib (
         .clk_i, .rst_ni, .s_valid_i (sr_valid_i), .s_ready_o (sr_ready_o), .s_tag_i (sr_ctx),
-        .s_local_i (sr_local_i), .s_spec_i (sr_spec_x), .s_transmits_i (1'b0),
+        .s_local_i (sr_local_i), .s_spec_i (sr_spec_x), .s_transmits_i (tx_q[sr_ctx]),
         .s_filter_i (hmat_q[sr_ctx][M_FILTER +: 16]), .s_w_i (w_q[sr_ctx]),
         .m_valid_o (ct_valid), .m_ready_i (ct_ready), .m_tag_o (ct_ctx), .m_contrib_o (ct_contrib));
 
@@ -282,8 +296,8 @@ module csgrt_raytree #(
         .clk_i, .rst_ni, .valid_i (rq_push), .ready_o (rq_room), .data_i ({rq_info, rq_d, rq_o, rq_rec}),
         .valid_o (ray_valid_o), .ready_i (ray_ready_i), .data_o ({ray_info_o, ray_d_o, ray_o_o, ray_rec_o}));
 
-    // spawn requests: {ctx, reflect, lights, coef, t, d, o} of the colour ray's hit
-    localparam SPQ_W = 3 * B + 3 * B + TW + 10 * B + MAX_LIGHTS + 1 + CB;
+    // spawn requests: {iors, refract, ctx, reflect, lights, coef, t, d, o} of the colour ray's hit
+    localparam SPQ_W = 3 * B + 3 * B + TW + 10 * B + MAX_LIGHTS + 1 + CB + 1 + 32;
     reg                 spq_push;
     reg  [SPQ_W-1:0]    spq_data;
     wire                spq_room;
@@ -291,7 +305,8 @@ module csgrt_raytree #(
         .clk_i, .rst_ni, .valid_i (spq_push), .ready_o (spq_room),
         .data_i (spq_data),
         .valid_o (sp_valid_o), .ready_i (sp_ready_i),
-        .data_o ({sp_user_o, sp_reflect_o, sp_lights_o, sp_coef_o, sp_t_o, sp_d_o, sp_o_o}));
+        .data_o ({sp_ior_to_o, sp_ior_from_o, sp_refract_o, sp_user_o, sp_reflect_o, sp_lights_o, sp_coef_o, sp_t_o,
+                  sp_d_o, sp_o_o}));
 
     // ---- event selection ----------------------------------------------------------------
     // a free context and room in the output buffer for a new pixel
@@ -375,6 +390,8 @@ module csgrt_raytree #(
     // ---- the hit's decisions ---------------------------------------------------------------
     wire        deeper     = ({4'd0, h_depth} < max_trace_i);
     wire        want_refl  = (REFLECTION != 0) && deeper && (h_mat[M_REFL +: 16] != 16'd0);
+    // accumulate_fx's `transmits`: the shown material lets light through
+    wire        want_refr  = (REFRACTION != 0) && deeper && (h_mat[M_FILTER +: 16] != 16'd0);
     wire [MAX_LIGHTS-1:0] light_mask;
     genvar g;
     generate
@@ -383,7 +400,7 @@ module csgrt_raytree #(
         end
     endgenerate
     wire        h_colour_hit = h_hit && hp_in_range;
-    wire        want_spawn   = want_refl || (light_mask != {MAX_LIGHTS{1'b0}});
+    wire        want_spawn   = want_refl || want_refr || (light_mask != {MAX_LIGHTS{1'b0}});
 
     // ---- state updates ---------------------------------------------------------------------
     // entry idx of a context's stack
@@ -453,7 +470,19 @@ module csgrt_raytree #(
                             {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wr_q[ch_user_i], ch_d_i, ch_p_i};
                         sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
                     end
-                    default: ;   // refraction: not in this configuration
+                    K_REFRACT: begin
+                        // the transmitted ray: far side, the flags after the crossing (and the look-ahead)
+                        stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
+                            {{RUN_W{1'b0}}, after_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
+                        sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
+                    end
+                    K_TIR: begin
+                        // total internal reflection: near side, like a reflected ray, with the transmitted weight
+                        stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
+                            {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
+                        sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
+                    end
+                    default: ;   // CONTINUE: not asked for
                 endcase
                 if (ch_last_i) begin
                     spawning_q[ch_user_i] <= 1'b0;
@@ -483,10 +512,14 @@ module csgrt_raytree #(
                         hmat_q[h_ctx]  <= h_mat;
                         near_q[h_ctx]  <= h_near;
                         run_q[h_ctx]   <= h_run;
+                        after_q[h_ctx] <= h_after;
+                        wt_q[h_ctx]    <= hp_w_t;
+                        tx_q[h_ctx]    <= want_refr;
                         pend_q[h_ctx]  <= {PW{1'b0}};
                         if (want_spawn) begin
                             spq_push <= 1'b1;
-                            spq_data <= {h_ctx, want_refl, light_mask, h_coef, h_t, h_d, h_o};
+                            spq_data <= {h_ior_to, h_ior_from, want_refr, h_ctx, want_refl, light_mask, h_coef, h_t,
+                                         h_d, h_o};
                             spawning_q[h_ctx] <= 1'b1;
                         end else begin
                             shade_q[h_ctx] <= 1'b1;

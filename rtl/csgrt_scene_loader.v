@@ -60,7 +60,18 @@ module csgrt_scene_loader #(
     output reg  [10*BITS-1:0]         leaf_b_coef_o,
     // material memory read port (material index 1..; 0 reads entry 0)
     input  wire [7:0]                 mat_addr_i,
-    output reg  [9*16+10-1:0]         mat_o        // the record below
+    output reg  [9*16+10-1:0]         mat_o,       // the record below
+    // refraction: leaf memory read port C (the look-ahead's quadric test),
+    // the index of refraction of two materials (ior_of: air 1 << 12) and a
+    // bit per material that lets rays through (is_transparent: air, or
+    // filter > 0)
+    input  wire [LEAF_BITS-1:0]       leaf_c_addr_i,
+    output reg  [10*BITS-1:0]         leaf_c_coef_o,
+    input  wire [7:0]                 ior_a_addr_i,
+    output reg  [15:0]                ior_a_o,
+    input  wire [7:0]                 ior_b_addr_i,
+    output reg  [15:0]                ior_b_o,
+    output reg  [(1<<8)-1:0]          mat_clear_o
 );
     // Material record layout on mat_o (16-bit fields, 12 fraction bits):
     //   [15:0] r  [31:16] g  [47:32] b  [63:48] ambient  [79:64] diffuse
@@ -87,6 +98,7 @@ module csgrt_scene_loader #(
     reg [TREE_HEIGHT-1:0] leaf_slot_mem [0:MAX_LEAVES-1];
     reg [7:0]             leaf_mat_q    [0:MAX_LEAVES-1];
     reg [MAT_W-1:0]       mat_mem       [0:MAX_MATERIALS];
+    reg [15:0]            ior_mem       [0:MAX_MATERIALS];   // the iors again: two more read ports
 
     // per-section position: item and field counters instead of divisions
     reg [31:0]            item_q;
@@ -118,6 +130,7 @@ module csgrt_scene_loader #(
             loaded_o     <= 1'b0;
             error_o      <= 4'd0;
             slot_used_o  <= {SLOTS{1'b0}};
+            mat_clear_o  <= {{255{1'b0}}, 1'b1};   // air lets rays through; materials as they load
             num_lights_o <= 4'd0;
             // until the header arrives every section lies beyond any index
             off_camera_q <= 32'hffff_ffff; off_lights_q <= 32'hffff_ffff; off_materials_q <= 32'hffff_ffff;
@@ -196,9 +209,12 @@ module csgrt_scene_loader #(
                     4'd7: mat_acc_q[96 +: 16] <= w[15:0];
                     4'd3: mat_acc_q[112 +: 16] <= w[15:0];   // filter
                     4'd8: mat_acc_q[128 +: 16] <= w[15:0];   // ior
-                    4'd9: if (it_now < MAX_MATERIALS)
+                    4'd9: if (it_now < MAX_MATERIALS) begin
                               mat_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], w[9:0],
                                                               mat_acc_q[111:0]};
+                              ior_mem[it_now[7:0] + 8'd1] <= mat_acc_q[128 +: 16];
+                              mat_clear_o[it_now[7:0] + 8'd1] <= mat_acc_q[112 +: 16] != 16'd0;
+                          end
                     default: ;
                 endcase
             end
@@ -232,10 +248,16 @@ module csgrt_scene_loader #(
         leaf_a_slot_o <= leaf_slot_mem[leaf_a_addr_i];
         leaf_b_coef_o <= leaf_coef_mem[leaf_b_addr_i];
         mat_o         <= mat_mem[mat_addr_i];
+        leaf_c_coef_o <= leaf_coef_mem[leaf_c_addr_i];
+        ior_a_o       <= (ior_a_addr_i == 8'd0) ? 16'd4096 : ior_mem[ior_a_addr_i];
+        ior_b_o       <= (ior_b_addr_i == 8'd0) ? 16'd4096 : ior_mem[ior_b_addr_i];
     end
 
     initial begin
-        for (k = 0; k <= MAX_MATERIALS; k = k + 1) mat_mem[k] = {MAT_W{1'b0}};
+        for (k = 0; k <= MAX_MATERIALS; k = k + 1) begin
+            mat_mem[k] = {MAT_W{1'b0}};
+            ior_mem[k] = 16'd0;
+        end
     end
 endmodule
 `default_nettype wire

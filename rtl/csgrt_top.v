@@ -6,9 +6,11 @@
 //                                          |                   |
 //                                       ray queue ------> lookup -> shade -> pixels
 //
-// With shadows or reflection (SHADOWS, REFLECTION; a build has only the
-// units its parameters ask for) the camera's rays and the secondary rays
-// go through csgrt_raytree, which schedules each pixel's ray tree:
+// With shadows, reflection or refraction (SHADOWS, REFLECTION, REFRACTION;
+// a build has only the units its parameters ask for) the camera's rays and
+// the secondary rays go through csgrt_raytree, which schedules each pixel's
+// ray tree (with REFRACTION the walker also runs the look-ahead of
+// algorithm.md section 6, its geometric test in a csgrt_quadric_at):
 //
 //   camera -> raytree -> dispatch -> isect -> walk unit -> lookup -> raytree
 //               |  ^                                                 |  ^
@@ -34,6 +36,7 @@ module csgrt_top #(
     // effects (docs/effects.md): absent from the netlist when 0
     parameter SHADOWS       = 0,     // shadow rays to every light
     parameter REFLECTION    = 0,     // mirror reflection
+    parameter REFRACTION    = 0,     // transmitted rays, total internal reflection, the look-ahead
     parameter CONTEXTS      = 8,     // pixels in flight in the ray tree
     parameter MAX_DEPTH     = 8,     // ray tree depth the stack holds (>= max_trace_level)
     // derived
@@ -63,7 +66,9 @@ module csgrt_top #(
     output reg  [63:0] stat_cycles_o,
     output reg  [63:0] stat_pairs_o     // pairs issued, summed over the lanes
 );
-    localparam EFFECTS = (SHADOWS != 0) || (REFLECTION != 0);
+    localparam EFFECTS = (SHADOWS != 0) || (REFLECTION != 0) || (REFRACTION != 0);
+    localparam LA      = (REFRACTION != 0);   // the walker's look-ahead
+    localparam OD_W    = LA ? 6 * BITS : 0;   // a ray's o and d in its info word (the look-ahead's test)
     localparam LOOK_BEHIND = 4;                // model: kLookBehind
     localparam LBC    = $clog2(LOOK_BEHIND + 1);
     localparam RUN_W  = LBC + LOOK_BEHIND * (TREE_HEIGHT + 2);   // {same_t, entering, slots, count}
@@ -71,7 +76,8 @@ module csgrt_top #(
     localparam CB     = $clog2(CONTEXTS);
     localparam KW     = (MAX_LIGHTS > 1) ? $clog2(MAX_LIGHTS) : 1;
     localparam REC_W  = 1 + CB + KW + 48 + 4 + 48 + 5 + DIST_W;  // csgrt_raytree's ray record
-    localparam INFO_W = EFFECTS ? 1 + SLOTS + (BITS - 2) + RUN_W : 0;
+    localparam RT_INFO_W = 1 + SLOTS + (BITS - 2) + RUN_W;   // csgrt_raytree's info word
+    localparam INFO_W = EFFECTS ? RT_INFO_W + OD_W : 0;
     localparam INFO_P = EFFECTS ? INFO_W : 1;
     localparam PAY_W  = EFFECTS ? REC_W : 24;  // what a ray carries beside o, d: record, or {x, y}
     localparam RAY_W  = PAY_W + 6 * BITS;      // {payload, o, d}
@@ -96,6 +102,11 @@ module csgrt_top #(
     wire [TREE_HEIGHT-1:0]    leaf_a_slot;
     wire [7:0]                mat_addr;
     wire [MAT_W-1:0]          mat;
+    wire [LEAF_BITS-1:0]      leaf_c_addr;
+    wire [10*BITS-1:0]        leaf_c_coef;
+    wire [7:0]                ior_a_addr, ior_b_addr;
+    wire [15:0]               ior_a, ior_b;
+    wire [255:0]              mat_clear;
 
     csgrt_scene_loader #(
         .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .TREE_HEIGHT(TREE_HEIGHT),
@@ -111,7 +122,10 @@ module csgrt_top #(
         .node_op_o (node_op), .slot_material_o (slot_material), .slot_used_o (slot_used),
         .leaf_a_addr_i (leaf_a_addr), .leaf_a_coef_o (leaf_a_coef), .leaf_a_slot_o (leaf_a_slot),
         .leaf_b_addr_i (leaf_b_addr), .leaf_b_coef_o (leaf_b_coef),
-        .mat_addr_i (mat_addr), .mat_o (mat)
+        .mat_addr_i (mat_addr), .mat_o (mat),
+        .leaf_c_addr_i (leaf_c_addr), .leaf_c_coef_o (leaf_c_coef),
+        .ior_a_addr_i (ior_a_addr), .ior_a_o (ior_a), .ior_b_addr_i (ior_b_addr), .ior_b_o (ior_b),
+        .mat_clear_o (mat_clear)
     );
 
     // ----------------------------------------------------------------- camera
@@ -190,13 +204,20 @@ module csgrt_top #(
             wire [SLOTS-1:0]       inf_flags;
             wire [BITS-3:0]        inf_tlimit;
             wire [RUN_W-1:0]       inf_run;
+            wire [6*BITS-1:0]      inf_od;         // {o, d} (the look-ahead's test)
             wire                   inf_ready;
             if (EFFECTS) begin : g_info
-                assign {inf_run, inf_tlimit, inf_flags, inf_secondary} = inf;
+                assign {inf_run, inf_tlimit, inf_flags, inf_secondary} = inf[RT_INFO_W-1:0];
                 assign inf_valid = lane_info_valid[k];
                 assign lane_info_ready[k] = inf_ready;
+                if (LA) begin : g_od
+                    assign inf_od = inf[INFO_P-1 -: 6*BITS];
+                end else begin : g_no_od
+                    assign inf_od = {(6*BITS){1'b0}};
+                end
             end else begin : g_no_info
                 assign {inf_run, inf_tlimit, inf_flags, inf_secondary} = {(RUN_W + BITS - 2 + SLOTS + 1){1'b0}};
+                assign inf_od = {(6*BITS){1'b0}};
                 assign inf_valid = 1'b0;
                 assign lane_info_ready[k] = 1'b0;
                 wire unused_inf = ^{inf, lane_info_valid[k], inf_ready};
@@ -217,13 +238,15 @@ module csgrt_top #(
             );
             // Q at the ray's origin is positive (the look-behind of secondary rays)
             wire cpos = !res_c[BITS+5] && (res_c != {(BITS+6){1'b0}});
-            wire                 w_q_valid, w_a_ready, w_q_payload;
+            wire                 w_q_valid, w_q_ready, w_a_valid, w_a_ready, w_a_nonpos, w_q_payload;
             wire [BITS-2:0]      w_q_t;
             wire [LEAF_BITS-1:0] w_q_leaf;
+            wire [3*BITS-1:0]    w_q_o, w_q_d;
 
             csgrt_walk_unit #(
                 .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
-                .MAT_BITS(8), .PAYLOAD_WIDTH(1), .SECONDARY(EFFECTS ? 1 : 0), .LOOK_BEHIND(LOOK_BEHIND)
+                .MAT_BITS(8), .PAYLOAD_WIDTH(1), .SECONDARY(EFFECTS ? 1 : 0), .LOOK_BEHIND(LOOK_BEHIND),
+                .LOOK_AHEAD(LA ? 1 : 0)
             ) u_walk (
                 .clk_i, .rst_ni,
                 .ties_regular_i, .node_op_i (node_op), .slot_mat_i (slot_material), .slot_used_i (slot_used),
@@ -251,16 +274,46 @@ module csgrt_top #(
                 .lb_slot_o (w_run[k*RUN_W + LBC +: LOOK_BEHIND*TREE_HEIGHT]),
                 .lb_entering_o (w_run[k*RUN_W + LBC + LOOK_BEHIND*TREE_HEIGHT +: LOOK_BEHIND]),
                 .lb_same_t_o (w_run[k*RUN_W + LBC + LOOK_BEHIND*(TREE_HEIGHT+1) +: LOOK_BEHIND]),
-                // no refraction yet: no look-ahead (LOOK_AHEAD = 0 ignores these)
-                .mat_clear_i ({256{1'b0}}), .q_valid_o (w_q_valid), .q_ready_i (1'b0), .q_t_o (w_q_t),
-                .q_leaf_o (w_q_leaf), .q_payload_o (w_q_payload), .a_valid_i (1'b0), .a_ready_o (w_a_ready),
-                .a_nonpos_i (1'b0)
+                // the look-ahead (LOOK_AHEAD = 0 ignores these)
+                .mat_clear_i (mat_clear), .info_o_i (inf_od[6*BITS-1:3*BITS]), .info_d_i (inf_od[3*BITS-1:0]),
+                .q_valid_o (w_q_valid), .q_ready_i (w_q_ready), .q_t_o (w_q_t),
+                .q_leaf_o (w_q_leaf), .q_payload_o (w_q_payload), .q_o_o (w_q_o), .q_d_o (w_q_d),
+                .a_valid_i (w_a_valid), .a_ready_o (w_a_ready), .a_nonpos_i (w_a_nonpos)
             );
+            if (LA && k == 0) begin : g_beyond
+                // "the hit point already lies beyond the surface": the
+                // walker's query, the leaf's coefficients from read port C
+                // (registered: valid the clock after the walker raises the
+                // query; the leaf is steady while the walker waits)
+                reg             coef_ok_q;
+                wire [BITS+7:0] q_val;
+                wire            qa_s_ready;
+                always @(posedge clk_i) coef_ok_q <= rst_ni && w_q_valid && !(w_q_valid && w_q_ready);
+                assign leaf_c_addr = w_q_leaf;
+                assign w_q_ready   = qa_s_ready && coef_ok_q;
+                csgrt_quadric_at #(.BITS(BITS), .USER_WIDTH(1)) u_beyond (
+                    .clk_i, .rst_ni,
+                    .s_valid_i (w_q_valid && coef_ok_q), .s_ready_o (qa_s_ready),
+                    .s_o_i (w_q_o), .s_d_i (w_q_d), .s_t_i (w_q_t), .s_coef_i (leaf_c_coef), .s_user_i (1'b0),
+                    .m_valid_o (w_a_valid), .m_ready_i (w_a_ready), .m_q_o (q_val),
+                    /* verilator lint_off PINCONNECTEMPTY */
+                    .m_user_o ()
+                    /* verilator lint_on PINCONNECTEMPTY */
+                );
+                assign w_a_nonpos = q_val[BITS+7] || (q_val == {(BITS+8){1'b0}});
+            end else begin : g_no_beyond
+                assign w_q_ready  = 1'b0;
+                assign w_a_valid  = 1'b0;
+                assign w_a_nonpos = 1'b0;
+                if (k == 0) begin : g_port_c
+                    assign leaf_c_addr = {LEAF_BITS{1'b0}};
+                end
+                wire unused_beyond = ^{w_q_o, w_q_d, w_q_valid, w_q_t, w_q_leaf, w_a_ready};
+            end
 
             // Not used: the coefficients along the ray (debug) but c's sign,
             // the hit's tree slot and the payload; the look-ahead's query port.
-            wire unused_lane = &{1'b0, res_a, res_b, w_slot, w_payload, w_q_valid, w_a_ready, w_q_payload, w_q_t,
-                                 w_q_leaf};
+            wire unused_lane = &{1'b0, res_a, res_b, w_slot, w_payload, w_q_payload};
         end
     endgenerate
 
@@ -311,7 +364,7 @@ module csgrt_top #(
     reg [BITS-2:0]     l_t_q;
     reg [RAY_W-1:0]    l_ray_q;
     reg [LEAF_BITS-1:0] l_leaf_q;
-    reg [7:0]          l_mat_q, l_to_q;
+    reg [7:0]          l_mat_q, l_to_q, l_from_q;
     reg [SLOTS-1:0]    l_near_q, l_after_q;
     reg [RUN_W-1:0]    l_run_q;
     wire               l_ready;       // the next stage takes the record
@@ -322,6 +375,8 @@ module csgrt_top #(
     assign queue_ready = l_advance && hit_valid;
     assign leaf_b_addr = l_advance ? hit_leaf : l_leaf_q;    // hold the read while waiting
     assign mat_addr    = l_advance ? shown_mat : l_mat_q;
+    assign ior_a_addr  = l_advance ? hit_from : l_from_q;     // ior_of(BORDER from), (to): refraction
+    assign ior_b_addr  = l_advance ? hit_to : l_to_q;
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
@@ -334,6 +389,7 @@ module csgrt_top #(
             l_leaf_q  <= hit_leaf;
             l_mat_q   <= shown_mat;
             l_to_q    <= hit_to;
+            l_from_q  <= hit_from;
             l_near_q  <= hit_near;
             l_after_q <= hit_after;
             l_run_q   <= hit_run;
@@ -351,7 +407,8 @@ module csgrt_top #(
             assign d_last    = cam_last;
             assign d_info    = {INFO_P{1'b0}};
 
-            wire unused_eff = ^{hit_entering, l_to_q, l_near_q, l_after_q, l_run_q, mat[MAT_W-1:96], max_trace};
+            wire unused_eff = ^{hit_entering, l_to_q, l_near_q, l_after_q, l_run_q, mat[MAT_W-1:96], max_trace,
+                                l_from_q, ior_a, ior_b, mat_clear, leaf_c_coef};
             csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE)) u_shade (
                 .clk_i, .rst_ni,
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
@@ -375,10 +432,18 @@ module csgrt_top #(
             // the ray tree: secondary rays, shading after the shadow rays
             wire [REC_W-1:0]  rt_rec;
             wire [3*BITS-1:0] rt_o, rt_d;
+            wire [RT_INFO_W-1:0] rt_info;
             assign d_ray  = {rt_rec, rt_o, rt_d};
+            if (LA) begin : g_info_od
+                assign d_info = {rt_o, rt_d, rt_info};   // o, d for the look-ahead's test
+            end else begin : g_info_plain
+                assign d_info = rt_info;
+                wire unused_rf = ^{ior_a, ior_b, mat_clear, leaf_c_coef};
+            end
             assign d_last = 1'b0;   // one lane: every group is full
 
-            wire                   sp_valid, sp_ready, sp_reflect;
+            wire                   sp_valid, sp_ready, sp_reflect, sp_refract;
+            wire [15:0]            sp_ior_from, sp_ior_to;
             wire [3*BITS-1:0]      sp_o, sp_d;
             wire [BITS-2:0]        sp_t;
             wire [10*BITS-1:0]     sp_coef;
@@ -407,6 +472,7 @@ module csgrt_top #(
             csgrt_raytree #(
                 .BITS(BITS), .TREE_HEIGHT(TREE_HEIGHT), .MAX_LIGHTS(MAX_LIGHTS), .CONTEXTS(CONTEXTS),
                 .MAX_DEPTH(MAX_DEPTH), .LOOK_BEHIND(LOOK_BEHIND), .SHADOWS(SHADOWS), .REFLECTION(REFLECTION),
+                .REFRACTION(REFRACTION),
                 .DIST_W(DIST_W), .MAT_W(MAT_W), .COL_W(31), .SPEC_W(26), .LUT_FILE(LUT_FILE)
             ) u_raytree (
                 .clk_i, .rst_ni, .start_i (start),
@@ -415,13 +481,15 @@ module csgrt_top #(
                 .cam_valid_i (cam_valid), .cam_ready_o (cam_ready), .cam_x_i (cam_x), .cam_y_i (cam_y),
                 .cam_o_i (cam_o), .cam_d_i (cam_d),
                 .ray_valid_o (d_valid), .ray_ready_i (d_ready), .ray_rec_o (rt_rec), .ray_o_o (rt_o),
-                .ray_d_o (rt_d), .ray_info_o (d_info),
+                .ray_d_o (rt_d), .ray_info_o (rt_info),
                 .tr_valid_i (l_valid_q), .tr_ready_o (l_ready), .tr_rec_i (l_ray_q[RAY_W-1 -: REC_W]),
                 .tr_o_i (l_ray_q[6*BITS-1:3*BITS]), .tr_d_i (l_ray_q[3*BITS-1:0]),
                 .tr_hit_i (l_hit_q), .tr_t_i (l_t_q), .tr_to_i (l_to_q), .tr_coef_i (leaf_b_coef),
                 .tr_mat_i (mat), .tr_flags_near_i (l_near_q), .tr_run_i (l_run_q), .tr_flags_after_i (l_after_q),
+                .tr_ior_from_i (ior_a), .tr_ior_to_i (ior_b),
                 .sp_valid_o (sp_valid), .sp_ready_i (sp_ready), .sp_o_o (sp_o), .sp_d_o (sp_d), .sp_t_o (sp_t),
                 .sp_coef_o (sp_coef), .sp_lights_o (sp_lights), .sp_reflect_o (sp_reflect), .sp_user_o (sp_user),
+                .sp_refract_o (sp_refract), .sp_ior_from_o (sp_ior_from), .sp_ior_to_o (sp_ior_to),
                 .ch_valid_i (ch_valid), .ch_ready_o (ch_ready), .ch_kind_i (ch_kind), .ch_light_i (ch_light),
                 .ch_p_i (ch_p), .ch_d_i (ch_d), .ch_dist_i (ch_dist), .ch_lit_i (ch_lit), .ch_last_i (ch_last),
                 .ch_user_i (ch_user),
@@ -437,8 +505,8 @@ module csgrt_top #(
             csgrt_spawn #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .USER_WIDTH(CB)) u_spawn (
                 .clk_i, .rst_ni, .light_pos_i (light_pos),
                 .s_valid_i (sp_valid), .s_ready_o (sp_ready), .s_o_i (sp_o), .s_d_i (sp_d), .s_t_i (sp_t),
-                .s_coef_i (sp_coef), .s_ior_from_i (16'd4096), .s_ior_to_i (16'd4096), .s_lights_i (sp_lights),
-                .s_reflect_i (sp_reflect), .s_refract_i (1'b0), .s_continue_i (1'b0), .s_user_i (sp_user),
+                .s_coef_i (sp_coef), .s_ior_from_i (sp_ior_from), .s_ior_to_i (sp_ior_to), .s_lights_i (sp_lights),
+                .s_reflect_i (sp_reflect), .s_refract_i (sp_refract), .s_continue_i (1'b0), .s_user_i (sp_user),
                 .m_valid_o (ch_valid), .m_ready_i (ch_ready), .m_kind_o (ch_kind), .m_light_o (ch_light),
                 .m_o_o (ch_p), .m_in_range_o (ch_in_range), .m_d_o (ch_d), .m_dist_o (ch_dist), .m_lit_o (ch_lit),
                 .m_last_o (ch_last), .m_user_o (ch_user)
@@ -467,7 +535,7 @@ module csgrt_top #(
     generate
         if (EFFECTS && NUM_UNITS > 1) begin : g_bad_param
             initial begin
-                $display("ERROR %m: the effect units (SHADOWS, REFLECTION) need NUM_UNITS = 1 for now");
+                $display("ERROR %m: the effect units (SHADOWS, REFLECTION, REFRACTION) need NUM_UNITS = 1 for now");
                 $finish;
             end
         end

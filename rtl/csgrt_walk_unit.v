@@ -34,6 +34,9 @@
 //                      far side {flags_after_o, lb_count 0}.
 // The refraction look-ahead (LOOK_AHEAD = 1, needs SECONDARY = 1): see
 // csgrt_walker; mat_clear_i and the query port q_*/a_* pass through to it.
+// The query's point needs the ray's origin and direction: info_o_i,
+// info_d_i (read with the ray's info record) ride with the ray through the
+// sorter to the walker and come out as q_o_o, q_d_o beside the query.
 module csgrt_walk_unit #(
     parameter BITS          = 24,   // coordinate width B; t is B-1 bits
     parameter MAX_LEAVES    = 64,   // leaves per ray
@@ -98,35 +101,43 @@ module csgrt_walk_unit #(
     output wire [LOOK_BEHIND-1:0]               lb_same_t_o,
     // the look-ahead (LOOK_AHEAD; csgrt_walker)
     input  wire [(1<<MAT_BITS)-1:0]             mat_clear_i,
+    input  wire [3*BITS-1:0]        info_o_i,
+    input  wire [3*BITS-1:0]        info_d_i,
     output wire                     q_valid_o,
     input  wire                     q_ready_i,
     output wire [BITS-2:0]          q_t_o,
     output wire [LEAF_BITS-1:0]     q_leaf_o,
     output wire [PAYLOAD_WIDTH-1:0] q_payload_o,
+    output wire [3*BITS-1:0]        q_o_o,
+    output wire [3*BITS-1:0]        q_d_o,
     input  wire                     a_valid_i,
     output wire                     a_ready_o,
     input  wire                     a_nonpos_i
 );
 
     localparam NS = 1 << TREE_HEIGHT;
+    // with the look-ahead the ray's o and d ride above the payload
+    localparam OD = (LOOK_AHEAD != 0) ? 6 * BITS : 0;
+    localparam PW = PAYLOAD_WIDTH + OD;
 
     wire                     ray_valid, ray_done, ev_valid, ev_last, ev_entering, ev_pop;
     wire [NS-1:0]            ray_flags;
-    wire [PAYLOAD_WIDTH-1:0] ray_payload;
+    wire [PW-1:0]            ray_payload;
+    wire [PW-1:0]            sort_payload_in, walk_payload, walk_q_payload;
     wire [BITS-2:0]          ev_t;
     wire [LEAF_BITS-1:0]     ev_leaf;
     wire [TREE_HEIGHT-1:0]   ev_slot;
 
     csgrt_event_sort #(
         .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS),
-        .TREE_HEIGHT(TREE_HEIGHT), .PAYLOAD_WIDTH(PAYLOAD_WIDTH),
+        .TREE_HEIGHT(TREE_HEIGHT), .PAYLOAD_WIDTH(PW),
         .SECONDARY(SECONDARY), .LOOK_BEHIND(LOOK_BEHIND)
     ) u_sort (
         .clk_i(clk_i), .rst_ni(rst_ni), .ties_regular_i(ties_regular_i),
         .valid_i(valid_i), .ready_o(ready_o), .slot_i(slot_i), .leaf_i(leaf_i), .count_i(count_i),
         .t0_i(t0_i), .range0_i(range0_i), .enter0_i(enter0_i),
         .t1_i(t1_i), .range1_i(range1_i), .enter1_i(enter1_i),
-        .inside_i(inside_i), .last_i(last_i), .payload_i(payload_i), .cpos_i(cpos_i),
+        .inside_i(inside_i), .last_i(last_i), .payload_i(sort_payload_in), .cpos_i(cpos_i),
         .info_valid_i(info_valid_i), .info_ready_o(info_ready_o), .info_secondary_i(info_secondary_i),
         .info_flags_i(info_flags_i), .info_tlimit_i(info_tlimit_i), .info_lb_count_i(info_lb_count_i),
         .info_lb_slot_i(info_lb_slot_i), .info_lb_entering_i(info_lb_entering_i),
@@ -137,7 +148,7 @@ module csgrt_walk_unit #(
 
     csgrt_walker #(
         .BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
-        .MAT_BITS(MAT_BITS), .PAYLOAD_WIDTH(PAYLOAD_WIDTH),
+        .MAT_BITS(MAT_BITS), .PAYLOAD_WIDTH(PW),
         .SECONDARY(SECONDARY), .LOOK_BEHIND(LOOK_BEHIND), .LOOK_AHEAD(LOOK_AHEAD)
     ) u_walk (
         .clk_i(clk_i), .rst_ni(rst_ni),
@@ -147,12 +158,27 @@ module csgrt_walk_unit #(
         .ev_entering_i(ev_entering), .ev_pop_o(ev_pop),
         .valid_o(valid_o), .ready_i(ready_i), .hit_o(hit_o), .t_o(t_o), .leaf_o(leaf_o), .slot_o(slot_o),
         .entering_o(entering_o), .from_o(from_o), .to_o(to_o), .flags_before_o(flags_before_o),
-        .payload_o(payload_o), .flags_after_o(flags_after_o), .lb_count_o(lb_count_o), .lb_slot_o(lb_slot_o),
+        .payload_o(walk_payload), .flags_after_o(flags_after_o), .lb_count_o(lb_count_o), .lb_slot_o(lb_slot_o),
         .lb_entering_o(lb_entering_o), .lb_same_t_o(lb_same_t_o),
         .mat_clear_i(mat_clear_i), .q_valid_o(q_valid_o), .q_ready_i(q_ready_i), .q_t_o(q_t_o),
-        .q_leaf_o(q_leaf_o), .q_payload_o(q_payload_o), .a_valid_i(a_valid_i), .a_ready_o(a_ready_o),
+        .q_leaf_o(q_leaf_o), .q_payload_o(walk_q_payload), .a_valid_i(a_valid_i), .a_ready_o(a_ready_o),
         .a_nonpos_i(a_nonpos_i));
 
+    assign payload_o   = walk_payload[PAYLOAD_WIDTH-1:0];
+    assign q_payload_o = walk_q_payload[PAYLOAD_WIDTH-1:0];
+    generate
+        if (LOOK_AHEAD != 0) begin : g_od
+            assign sort_payload_in = {info_o_i, info_d_i, payload_i};
+            assign {q_o_o, q_d_o}  = walk_q_payload[PW-1:PAYLOAD_WIDTH];
+            // the records' copy of o and d: not needed after the walk
+            wire unused_od = ^walk_payload[PW-1:PAYLOAD_WIDTH];
+        end else begin : g_no_od
+            assign sort_payload_in = payload_i;
+            assign q_o_o = {(3*BITS){1'b0}};
+            assign q_d_o = {(3*BITS){1'b0}};
+            wire unused_od = ^{info_o_i, info_d_i};
+        end
+    endgenerate
 endmodule
 
 `default_nettype wire

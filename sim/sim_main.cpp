@@ -19,21 +19,28 @@ using namespace csgrt;
 using Clock = std::chrono::steady_clock;
 
 // The effect units this binary was built with (csgrt_top's SHADOWS,
-// REFLECTION; the Makefile passes them).
+// REFLECTION, REFRACTION; the Makefile passes them).
 #ifndef CSGRT_SHADOWS
 #define CSGRT_SHADOWS 0
 #endif
 #ifndef CSGRT_REFLECTION
 #define CSGRT_REFLECTION 0
 #endif
+#ifndef CSGRT_REFRACTION
+#define CSGRT_REFRACTION 0
+#endif
 
 namespace {
 
-constexpr bool kEffects = CSGRT_SHADOWS || CSGRT_REFLECTION;
-const char* kBuildUnits = CSGRT_SHADOWS && CSGRT_REFLECTION ? "shadows and reflection units"
-                          : CSGRT_SHADOWS                   ? "a shadow unit"
-                          : CSGRT_REFLECTION                ? "a reflection unit"
-                                                            : "no effect units";
+constexpr bool kEffects = CSGRT_SHADOWS || CSGRT_REFLECTION || CSGRT_REFRACTION;
+const char* kBuildUnits = !kEffects ? "no effect units"
+                          : CSGRT_SHADOWS && CSGRT_REFLECTION && CSGRT_REFRACTION ? "shadow, reflection and refraction units"
+                          : CSGRT_SHADOWS && CSGRT_REFLECTION ? "shadows and reflection units"
+                          : CSGRT_SHADOWS && CSGRT_REFRACTION ? "shadow and refraction units"
+                          : CSGRT_REFLECTION && CSGRT_REFRACTION ? "reflection and refraction units"
+                          : CSGRT_SHADOWS ? "a shadow unit"
+                          : CSGRT_REFLECTION ? "a reflection unit"
+                                             : "a refraction unit";
 
 const char* kUsage =
     "usage: csgrt_sim --scene-image SCENE.bin --out OUT.png [--ties paper|regular] [--trace OUT.fst]\n"
@@ -81,7 +88,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     const int W = cs.width, H = cs.height;
-    const EffectSet rtl_fx = rtl_effects(cs, CSGRT_SHADOWS, CSGRT_REFLECTION);
+    const EffectSet rtl_fx = rtl_effects(cs, CSGRT_SHADOWS, CSGRT_REFLECTION, CSGRT_REFRACTION);
     std::printf("scene effects: %s; this build has %s; it renders: %s\n", scene_effects(cs).str().c_str(),
                 kBuildUnits, rtl_fx.str().c_str());
 

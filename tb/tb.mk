@@ -75,12 +75,12 @@ lint-rtl:
 	done; \
 	echo "verilator lint csgrt_top NUM_UNITS=2"; \
 	$(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GNUM_UNITS=2 rtl/csgrt_top.v; \
-	for fx in "-GSHADOWS=1 -GREFLECTION=1" "-GSHADOWS=1" "-GREFLECTION=1"; do for b in $(LINT_TOP_BITS); do \
+	for fx in "-GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1" "-GSHADOWS=1 -GREFLECTION=1" "-GSHADOWS=1" "-GREFLECTION=1" "-GREFRACTION=1"; do for b in $(LINT_TOP_BITS); do \
 	    echo "verilator lint csgrt_top BITS=$$b $$fx"; \
 	    $(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GBITS=$$b $$fx rtl/csgrt_top.v; \
 	done; done; \
 	echo "yosys proc csgrt_top SHADOWS=1 REFLECTION=1 (the ray tree: no latches)"; \
-	$(YOSYS) -q -l $(BUILD)/yosys_lint_fx.log -p "read_verilog $(TB_RTL); chparam -set SHADOWS 1 -set REFLECTION 1 csgrt_top; \
+	$(YOSYS) -q -l $(BUILD)/yosys_lint_fx.log -p "read_verilog $(TB_RTL); chparam -set SHADOWS 1 -set REFLECTION 1 -set REFRACTION 1 csgrt_top; \
 	    hierarchy -top csgrt_top; proc; check -assert; \
 	    select -assert-none t:\$$dlatch t:\$$adlatch" > /dev/null; \
 	echo "yosys synth csgrt_top (BITS=24; a few minutes)"; \

@@ -22,6 +22,9 @@ using namespace csgrt;
 #ifndef FRAME_SHADOWS
 #define FRAME_SHADOWS 0
 #endif
+#ifndef FRAME_REFRACTION
+#define FRAME_REFRACTION 0
+#endif
 #ifndef FRAME_REFLECTION
 #define FRAME_REFLECTION 0
 #endif
@@ -29,7 +32,7 @@ using namespace csgrt;
 namespace {
 
 const int kLeafBits = 6, kTreeHeight = 8;
-constexpr bool kEffects = FRAME_SHADOWS || FRAME_REFLECTION;
+constexpr bool kEffects = FRAME_SHADOWS || FRAME_REFLECTION || FRAME_REFRACTION;
 
 std::vector<uint32_t> compile_words(const Scene& s, int w, int h) {
     CompileOptions o;
@@ -53,7 +56,7 @@ FrameResult run_frame(const std::vector<uint32_t>& words, TiePolicy ties, int re
     RenderOptions ro;
     ro.ties = ties;
     ro.threads = 1;
-    ro.effects = rtl_effects(cs, FRAME_SHADOWS, FRAME_REFLECTION);   // the effects this build renders
+    ro.effects = rtl_effects(cs, FRAME_SHADOWS, FRAME_REFLECTION, FRAME_REFRACTION);   // what this build renders
     const Frame model = render(cs, ro);
     csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
     sim.reset();
@@ -171,5 +174,21 @@ TEST(FrameEffects, CoincidentFacesWithShadows) {
 
 TEST(FrameEffects, BackPressureLosesNothing) {
     expect_pixel_exact("mirror, 40% ready", scene_file("mirror"), 24, 18, TiePolicy::Paper, 40);
+}
+#endif
+
+#if FRAME_REFRACTION
+// Refraction: transmitted rays, total internal reflection, the look-ahead
+// through coincident transparent surfaces (the walker and csgrt_quadric_at),
+// transparent shadows.
+TEST(FrameEffects, RefractionOnTheGlassScenes) {
+    expect_pixel_exact("glass", scene_file("glass"), 40, 30, TiePolicy::Paper);
+    expect_pixel_exact("nested_glass", scene_file("nested_glass"), 40, 30, TiePolicy::Regular);
+}
+
+TEST(FrameEffects, CoincidentTransparentSurfaces) {
+    expect_pixel_exact("fig13 (Fig. 13)", paper_file("fig13_coincident_transparent"), 40, 30, TiePolicy::Paper);
+    expect_pixel_exact("fig13 (Fig. 13)", paper_file("fig13_coincident_transparent"), 40, 30, TiePolicy::Regular);
+    expect_pixel_exact("fig16 (Fig. 16)", paper_file("fig16_transparency"), 40, 30, TiePolicy::Paper);
 }
 #endif
