@@ -169,8 +169,8 @@ $(BOARD_BIN): $(RTL_SRC) $(BOARD_SRC) tb/board/tb_board.cpp $(BUILD)/libcsgrt.a 
 	    > $@.log 2>&1 || { tail -30 $@.log; exit 1; }
 
 # ------------------------------------------------------------------ checks
-test: deps $(BUILD)/csgrt $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN)
-	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN)
+test: deps $(BUILD)/csgrt $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN) accuracy-smoke
+	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN) tools/accuracy_test.py
 
 lint: deps lint-rtl
 
@@ -188,6 +188,18 @@ stability: model
 
 hard-cases: model
 	@tools/hard_cases.sh
+
+# the precision sweep and its report (tools/accuracy.py: docs/accuracy/results.csv,
+# docs/accuracy.md); resumes where it stopped. ACCURACY_FLAGS e.g. --no-synth,
+# --bits 16,24, --synth-tree-height 6, --stop-after-synth, --force
+.PHONY: accuracy accuracy-smoke
+ACCURACY_FLAGS ?=
+accuracy: model
+	@/usr/bin/python3 tools/accuracy.py $(ACCURACY_FLAGS)
+
+# the simulation build the sweep's smoke test in make test (tools/accuracy_test.py) runs
+accuracy-smoke: model
+	@$(MAKE) --no-print-directory $(BUILD)/sim/b16u1s1r1/csgrt_sim BITS=16 UNITS=1 SHADOWS=1 REFLECTION=1
 
 clean:
 	rm -rf $(BUILD) out

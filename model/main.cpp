@@ -38,6 +38,8 @@ const char* kUsage =
     "  --tree-height H            hardware classification-tree height (compile: default 8)\n"
     "  --no-cull                  intersect every leaf for every ray (no bounding-box culling;\n"
     "                             the image is the same bit for bit, only slower)\n"
+    "  --primary-only             render: primary rays only (local shading, no shadow, reflected or\n"
+    "                             transmitted rays), as the epsilon method renders; for comparisons\n"
     "  --quiet                    no progress line\n";
 
 struct Args {
@@ -46,6 +48,7 @@ struct Args {
     RenderOptions ropt;
     bool quiet = false;
     bool epsilon = false;
+    bool primary_only = false;
 };
 
 [[noreturn]] void usage_error(const std::string& msg) {
@@ -79,6 +82,7 @@ Args parse_args(int argc, char** argv) {
         else if (s == "--tree-height") a.copt.tree_height = int_arg(s, value());
         else if (s == "--quiet") a.quiet = true;
         else if (s == "--no-cull") a.copt.cull = false;
+        else if (s == "--primary-only") a.primary_only = true;
         else if (s == "--arith") {
             const std::string v = value();
             if (v == "fixed") a.ropt.arith = Arith::Fixed;
@@ -154,6 +158,12 @@ int main(int argc, char** argv) {
         if (a.cmd == "render") {
             RenderOptions ro = a.ropt;
             ro.progress = !a.quiet;
+            if (a.primary_only) {
+                // the scene's local shading (specular) stays: only the rays that spawn rays go
+                EffectSet fx = scene_effects(cs);
+                fx.shadows = fx.reflection = fx.refraction = false;
+                ro.effects = fx;
+            }
             if (!a.quiet) std::fprintf(stderr, "csgrt: effects: %s\n", scene_effects(cs).str().c_str());
             const auto t0 = std::chrono::steady_clock::now();
             const Frame f = a.epsilon ? render_epsilon(cs, ro) : render(cs, ro);
