@@ -199,7 +199,7 @@ accuracy: model
 
 # the simulation build the sweep's smoke test in make test (tools/accuracy_test.py) runs
 accuracy-smoke: model
-	@$(MAKE) --no-print-directory $(BUILD)/sim/b16u1s1r1/csgrt_sim BITS=16 UNITS=1 SHADOWS=1 REFLECTION=1
+	@$(MAKE) --no-print-directory $(BUILD)/sim/b16u1s1r1f1/csgrt_sim BITS=16 UNITS=1 SHADOWS=1 REFLECTION=1 REFRACTION=1
 
 clean:
 	rm -rf $(BUILD) out
