@@ -58,7 +58,6 @@ module csgrt_div_core #(
     reg [DW-1:0] s0_rem_q, s0_ud_q;
     reg [QB-1:0] s0_lo_q;
     reg          s0_neg_q, s0_ovf_q;
-    reg [UW-1:0] s0_user_q;
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
@@ -72,14 +71,15 @@ module csgrt_div_core #(
             s0_lo_q   <= un[QB-1:0];
             s0_neg_q  <= num_i[NW-1] ^ den_i[DW-1];
             s0_ovf_q  <= ovf0;
-            s0_user_q <= user_i;
         end
     end
 
     // ---- stages 1..QB: one quotient bit each ------------------------------
-    // Side information (|d|, the low numerator bits, neg, ovf, user) rides
-    // along in one flat word per stage.
-    localparam SW = DW + QB + 2 + UW;   // side word width
+    // Side information (|d|, the low numerator bits, neg, ovf) rides along
+    // in one flat word per stage. The sideband user_i, needed only at the
+    // end, takes a RAM delay line of the same QB + 1 enabled clocks (block
+    // or LUT RAM on the FPGA rather than QB + 1 copies in flip-flops).
+    localparam SW = DW + QB + 2;        // side word width
 
     reg  [QB-1:0]    valid_q;
     wire [QB-1:0]    valid_d;
@@ -90,7 +90,7 @@ module csgrt_div_core #(
     reg  [QB*SW-1:0] side_q;
     wire [QB*SW-1:0] side_d;
 
-    wire [SW-1:0]    side0 = {s0_user_q, s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
+    wire [SW-1:0]    side0 = {s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
     wire [QB-1:0]    valid_s = {valid_q[QB-2:0], s0_valid_q};
     wire [QB*DW-1:0] rem_s   = {rem_q[(QB-1)*DW-1:0], s0_rem_q};
     wire [QB*QB-1:0] quot_s  = {quot_q[(QB-1)*QB-1:0], {QB{1'b0}}};
@@ -138,7 +138,10 @@ module csgrt_div_core #(
     assign quot_o  = quot_q[(QB-1)*QB +: QB];
     assign neg_o   = side_last[DW+QB];
     assign ovf_o   = side_last[DW+QB+1];
-    assign user_o  = side_last[DW+QB+2 +: UW];
+
+    csgrt_delay_ram #(.WIDTH(UW), .STAGES(QB + 1)) u_user (
+        .clk_i, .rst_ni, .ce_i, .data_i (user_i), .data_o (user_o)
+    );
 
     // the last stage's remainder, |d| and numerator bits are not needed
     wire unused_last = ^{rem_q[(QB-1)*DW +: DW], side_last[DW+QB-1:0]};

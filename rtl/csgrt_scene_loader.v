@@ -122,7 +122,16 @@ module csgrt_scene_loader #(
     wire [31:0] it_now = section_start ? 32'd0 : item_q;
     wire [31:0] tree_leaf = tree_r - SLOTS - 1;
 
-    integer k;
+    // Writes into the wide configuration registers go through loops over
+    // constant positions (one compare each) rather than part-selects with a
+    // computed 32-bit index, which synthesise to barrel shifters thousands
+    // of LUTs wide (docs/fpga.md); the positions written are the same.
+    wire [TREE_HEIGHT-1:0] op_pos = tree_r[TREE_HEIGHT-1:0] - 1'b1;   // heap position - 1 (1 <= tree_r <= SLOTS)
+    wire [31:0] op32   = {{(32-TREE_HEIGHT){1'b0}}, op_pos};
+    wire [31:0] slot32 = {{(32-TREE_HEIGHT){1'b0}}, w[TREE_HEIGHT-1:0]};
+    wire [31:0] f32    = {28'd0, f_now};
+
+    integer k, j, f;
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
@@ -172,16 +181,15 @@ module csgrt_scene_loader #(
 
             // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3)
             if (in_camera) begin
-                if (cam_r < 3)
-                    cam_origin_o[cam_r[1:0]*BITS +: BITS] <= w[BITS-1:0];
-                else if (cam_r < 9)
-                    cam_base_o[(cam_r - 3) * 32 +: 32] <= w;
-                else if (cam_r < 15)
-                    cam_dx_o[(cam_r - 9) * 32 +: 32] <= w;
-                else if (cam_r < 21)
-                    cam_dy_o[(cam_r - 15) * 32 +: 32] <= w;
-                else if (cam_r < 24)
-                    background_o[(cam_r - 21) * 16 +: 16] <= w[15:0];
+                for (j = 0; j < 3; j = j + 1)
+                    if (cam_r == j) cam_origin_o[j*BITS +: BITS] <= w[BITS-1:0];
+                for (j = 0; j < 6; j = j + 1) begin
+                    if (cam_r == 3 + j)  cam_base_o[j*32 +: 32] <= w;
+                    if (cam_r == 9 + j)  cam_dx_o[j*32 +: 32] <= w;
+                    if (cam_r == 15 + j) cam_dy_o[j*32 +: 32] <= w;
+                end
+                for (j = 0; j < 3; j = j + 1)
+                    if (cam_r == 21 + j) background_o[j*16 +: 16] <= w[15:0];
             end
 
             // ---- lights, materials, leaves: item / field counters
@@ -193,9 +201,14 @@ module csgrt_scene_loader #(
                     field_q <= field_q + 4'd1;
                 end
             end
+            // f_now < LIGHT_WORDS = 6 here: the field counter wraps at the section size
             if (in_lights && it_now < MAX_LIGHTS) begin
-                if (f_now < 3) light_pos_o[(it_now * 3 + {28'd0, f_now}) * BITS +: BITS] <= w[BITS-1:0];
-                else           light_col_o[(it_now * 3 + {28'd0, f_now} - 3) * 16 +: 16] <= w[15:0];
+                for (j = 0; j < MAX_LIGHTS; j = j + 1) begin
+                    for (f = 0; f < 3; f = f + 1)
+                        if (it_now == j && f32 == f) light_pos_o[(j*3 + f) * BITS +: BITS] <= w[BITS-1:0];
+                    for (f = 3; f < 6; f = f + 1)
+                        if (it_now == j && f32 == f) light_col_o[(j*3 + f - 3) * 16 +: 16] <= w[15:0];
+                end
             end
             if (in_materials) begin
                 // words: r g b filter ambient diffuse phong reflection ior phong_size
@@ -220,7 +233,8 @@ module csgrt_scene_loader #(
             end
             if (in_leaves) begin
                 if (f_now < 10) begin
-                    coef_acc_q[f_now * BITS +: BITS] <= w[BITS-1:0];
+                    for (f = 0; f < 10; f = f + 1)
+                        if (f32 == f) coef_acc_q[f * BITS +: BITS] <= w[BITS-1:0];
                 end else if (it_now < MAX_LEAVES) begin
                     leaf_coef_mem[it_now[LEAF_BITS-1:0]] <= coef_acc_q;
                     leaf_mat_q[it_now[LEAF_BITS-1:0]]    <= w[7:0];
@@ -232,11 +246,15 @@ module csgrt_scene_loader #(
                 if (tree_r == 0) begin
                     if (w != TREE_HEIGHT) error_o <= 4'd5;
                 end else if (tree_r <= SLOTS) begin
-                    node_op_o[(tree_r - 1) * 2 +: 2] <= w[1:0];
+                    for (j = 0; j < SLOTS; j = j + 1)
+                        if (op32 == j) node_op_o[j * 2 +: 2] <= w[1:0];
                 end else if (tree_leaf < MAX_LEAVES) begin
                     leaf_slot_mem[tree_leaf[LEAF_BITS-1:0]] <= w[TREE_HEIGHT-1:0];
-                    slot_material_o[w[TREE_HEIGHT-1:0] * 8 +: 8] <= leaf_mat_q[tree_leaf[LEAF_BITS-1:0]];
-                    slot_used_o[w[TREE_HEIGHT-1:0]] <= 1'b1;
+                    for (j = 0; j < SLOTS; j = j + 1)
+                        if (slot32 == j) begin
+                            slot_material_o[j * 8 +: 8] <= leaf_mat_q[tree_leaf[LEAF_BITS-1:0]];
+                            slot_used_o[j] <= 1'b1;
+                        end
                 end
             end
         end

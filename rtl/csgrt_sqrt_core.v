@@ -43,8 +43,6 @@ module csgrt_sqrt_core #(
     wire [R*R-1:0]        root_d;
     reg  [R*NW-1:0]       n_q;
     wire [R*NW-1:0]       n_d;
-    reg  [R*USER_WIDTH-1:0] user_q;
-    wire [R*USER_WIDTH-1:0] user_d;
 
     genvar k;
     generate
@@ -53,19 +51,16 @@ module csgrt_sqrt_core #(
             wire [RW-1:0] rem_in;
             wire [R-1:0]  root_in;
             wire [NW-1:0] n_in;
-            wire [USER_WIDTH-1:0] user_in;
             wire          valid_in;
             if (k == 0) begin : g_in
                 assign rem_in   = {RW{1'b0}};
                 assign root_in  = {R{1'b0}};
                 assign n_in     = n_i;
-                assign user_in  = user_i;
                 assign valid_in = valid_i;
             end else begin : g_in
                 assign rem_in   = rem_q[(k-1)*RW +: RW];
                 assign root_in  = root_q[(k-1)*R +: R];
                 assign n_in     = n_q[(k-1)*NW +: NW];
-                assign user_in  = user_q[(k-1)*USER_WIDTH +: USER_WIDTH];
                 assign valid_in = valid_q[k-1];
             end
             // rem_in < 2^R: its two top bits are always zero
@@ -80,7 +75,6 @@ module csgrt_sqrt_core #(
             assign rem_d[k*RW +: RW]             = take ? rem_sh - trial : rem_sh;
             assign root_d[k*R +: R]              = {root_in[R-2:0], take};
             assign n_d[k*NW +: NW]               = n_in;
-            assign user_d[k*USER_WIDTH +: USER_WIDTH] = user_in;
         end
     endgenerate
 
@@ -94,13 +88,17 @@ module csgrt_sqrt_core #(
             rem_q  <= rem_d;
             root_q <= root_d;
             n_q    <= n_d;
-            user_q <= user_d;
         end
     end
 
+    // The sideband rides along R enabled clocks in a RAM delay line (block
+    // or LUT RAM on the FPGA) rather than R copies in flip-flops.
+    csgrt_delay_ram #(.WIDTH(USER_WIDTH), .STAGES(R)) u_user (
+        .clk_i, .rst_ni, .ce_i, .data_i (user_i), .data_o (user_o)
+    );
+
     assign valid_o = valid_q[R-1];
     assign root_o  = root_q[(R-1)*R +: R];
-    assign user_o  = user_q[(R-1)*USER_WIDTH +: USER_WIDTH];
 
     // the last stage's remainder and radicand copy are not needed
     wire unused_last = ^{rem_q[(R-1)*RW +: RW], n_q[(R-1)*NW +: NW]};

@@ -1,0 +1,81 @@
+`default_nettype none
+// csgrt_delay_ram — a data word delayed by STAGES enabled clocks, like a
+// STAGES-register shift chain on one stage enable, but kept in a RAM ring
+// buffer so that wide side data riding along a long pipeline (the sideband
+// of csgrt_sqrt_core / csgrt_div_core) lands in block or LUT RAM instead of
+// STAGES * WIDTH flip-flops (docs/fpga.md): ram_style "block" asks yosys for
+// DP16KD (512 x 36 each) rather than LUT RAM.
+//
+// Equivalence with the shift chain: the RAM has STAGES entries and a write
+// pointer p that steps (mod STAGES) on every enabled clock. An enabled clock
+// writes data_i at p and loads the output register from entry p + 1, the
+// oldest entry, written STAGES - 1 enabled clocks earlier; so a word written
+// at enabled clock e is in the output register after enabled clock
+// e + STAGES - 1, exactly where the STAGES-th register of the chain has it,
+// and ce_i low holds everything. Read and write addresses always differ, so
+// the RAM's read-during-write behaviour does not matter. No valid bit: the
+// caller keeps its valid chain in flip-flops (it needs the reset); the data
+// words, like the chain's, are not reset.
+//
+// Small lines (STAGES < MIN_STAGES or WIDTH * STAGES < MIN_BITS) stay a
+// register chain: a RAM's pointer and output register would cost more.
+//
+// Latency: STAGES enabled clocks. Handshake: none (the enclosing pipeline's
+// global stall ce_i).
+module csgrt_delay_ram #(
+    parameter WIDTH      = 8,    // data width (>= 1)
+    parameter STAGES     = 8,    // delay in enabled clocks (>= 1)
+    parameter MIN_STAGES = 4,    // below this: a register chain
+    parameter MIN_BITS   = 64    // below WIDTH * STAGES = this: a register chain
+) (
+    input  wire             clk_i,
+    input  wire             rst_ni,   // synchronous, active low (the pointer only)
+    input  wire             ce_i,     // stage enable (low = hold)
+    input  wire [WIDTH-1:0] data_i,
+    output wire [WIDTH-1:0] data_o
+);
+    generate
+        if (STAGES >= MIN_STAGES && STAGES >= 2 && WIDTH * STAGES >= MIN_BITS) begin : g_ram
+            localparam AW = $clog2(STAGES);
+            /* verilator lint_off WIDTH */
+            localparam [AW-1:0] LAST = STAGES - 1;
+            /* verilator lint_on WIDTH */
+            // block RAM: nearly all of the ECP5's DP16KD are free while LUTs
+            // are the scarce resource, and LUT RAM would spend them
+            (* ram_style = "block" *)
+            reg  [WIDTH-1:0] mem [0:STAGES-1];
+            reg  [AW-1:0]    wr_q;
+            reg  [WIDTH-1:0] out_q;
+            wire [AW-1:0]    rd = (wr_q == LAST) ? {AW{1'b0}} : wr_q + 1'b1;   // the oldest entry
+
+            always @(posedge clk_i) begin
+                if (!rst_ni) wr_q <= {AW{1'b0}};
+                else if (ce_i) wr_q <= rd;
+            end
+            always @(posedge clk_i) begin
+                if (ce_i) begin
+                    mem[wr_q] <= data_i;
+                    out_q     <= mem[rd];
+                end
+            end
+            assign data_o = out_q;
+        end else begin : g_regs
+            reg [STAGES*WIDTH-1:0] data_q;
+            if (STAGES == 1) begin : g_one
+                always @(posedge clk_i) if (ce_i) data_q <= data_i;
+            end else begin : g_many
+                always @(posedge clk_i) if (ce_i) data_q <= {data_q[(STAGES-1)*WIDTH-1:0], data_i};
+            end
+            assign data_o = data_q[(STAGES-1)*WIDTH +: WIDTH];
+            wire unused_rst = rst_ni;
+        end
+        if (WIDTH < 1 || STAGES < 1) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_delay_ram needs WIDTH >= 1, STAGES >= 1");
+                $finish;
+            end
+        end
+    endgenerate
+endmodule
+
+`default_nettype wire
