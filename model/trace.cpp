@@ -230,6 +230,40 @@ namespace {
 // traced again without culling (trace_fx).
 thread_local bool t_lookahead_passed_later = false;
 
+// The surface a hit reports, whose normal the hit takes (docs/numerics.md
+// section 5, "the hit's surface"): the hit's tie group is the run of events
+// at the hit's t (the sorted list holds them next to each other); the
+// surface is the first event of the group, in the sort order, whose crossing
+// alone, from the flags before the group, would change the root's
+// classification (BORDER x,y with x != y): that surface bounds the solid at
+// the hit point. A group of one is the hit itself. Where no event of the
+// group does (the ray meets an edge of the solid, where crossing either face
+// alone would not enter it) the hit leaf. Without this the tie key alone
+// would decide: under ties "regular" a right operand's edge plane, entered
+// last, is the hit leaf at a shared face's edge, and its normal points into
+// the union (docs/hard-cases.md).
+// Events of dead leaves (outside their live range, cull.h) are classified
+// here like any other: a culled trace then reports what the full one does
+// (no culled leaf has an event at the hit's t, complete_culled()).
+template <typename T>
+int surface_leaf(const CompiledScene& cs, const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed,
+                 const std::vector<uint8_t>& flags, size_t hit) {
+    const T t = ahead[hit].t;
+    size_t g0 = hit, g1 = hit + 1;
+    while (g0 > 0 && ahead[g0 - 1].t == t) --g0;
+    while (g1 < ahead.size() && ahead[g1].t == t) ++g1;
+    if (g1 - g0 == 1) return ahead[hit].leaf;
+    std::vector<uint8_t> before = flags;   // flags after the hit's toggle
+    for (size_t k = crossed.size(); k-- > 0 && crossed[k] >= g0;) before[ahead[crossed[k]].leaf] = !ahead[crossed[k]].entering;
+    for (size_t k = g0; k < g1; ++k) {
+        const Event<T>& e = ahead[k];
+        if (bool(before[e.leaf]) == e.entering) continue;
+        const Class c = classify(cs.program, before.data(), cs.leaf_material.data(), e.leaf, e.entering);
+        if (c.kind == Class::BORDER && c.from != c.to) return e.leaf;
+    }
+    return ahead[hit].leaf;
+}
+
 // The walk shared by both arithmetics. `flags` holds the origin flags on
 // entry; events behind the origin have already been applied (primary) or are
 // ignored (secondary).
@@ -267,7 +301,8 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
         if (cl.kind == Class::BORDER && cl.from != cl.to) {
             res.hit = true;
             res.t = e.t;
-            res.leaf = e.leaf;
+            res.leaf = surface_leaf(cs, ahead, crossed, flags, i);
+            res.cross_leaf = e.leaf;
             res.entering = e.entering;
             res.border = cl;
             res.flags_before = flags;

@@ -65,7 +65,8 @@ template <typename T>
 struct TraceResult {
     bool hit = false;
     T t{};
-    int leaf = -1;
+    int leaf = -1;                     // the surface the hit reports (its normal; surface_leaf())
+    int cross_leaf = -1;               // the leaf whose crossing is the hit (entering: its direction)
     bool entering = false;
     Class border;                      // BORDER from,to of the hit
     std::vector<uint8_t> flags_before; // leaf flags just before the hit (near side)

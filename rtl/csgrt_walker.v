@@ -18,6 +18,13 @@
 //                                       later tokens are dropped, its
 //                                       issuing stops, its events released
 //   last                             -> miss record {hit = 0, payload}
+// The hit's surface (docs/numerics.md section 5): leaf_o is the first event
+// of the hit's tie group (events at the hit's t) that is a border alone from
+// the flags before the group, else the hit's own leaf; slot_o and
+// entering_o stay the hit crossing's. An event at the same t as the ray's
+// previous event gets a probe token first (the flags before the group, no
+// toggle, no result of its own); a hit whose group has no such event yet is
+// held (pend_q) until the ray's next tokens decide it.
 // flags_before_o (bit per slot): the flags just before the hit, i.e. the
 // ray's flag bank with the toggles of the hit token and of the ray's tokens
 // issued after it (still in flight: a shadow of the tree's pipeline) undone.
@@ -69,8 +76,10 @@
 // Latency: a ray loaded at edge k issues its i-th event (i = 0, 1, ..) at
 // edge k+1+i (into the tree's first register); the tree's result is there
 // after edge k+i+TREE_HEIGHT and the record on valid_o (csgrt_skid) after
-// edge k+i+TREE_HEIGHT+1, the same with SECONDARY = 1. Throughput: one
-// event per clock; per ray max(1, issued events) + 2 clocks with event_sort
+// edge k+i+TREE_HEIGHT+1, the same with SECONDARY = 1 (counting probe
+// tokens as events). Throughput: one token per clock (an event, or the
+// probe of an event at its predecessor's t); per ray max(1, issued tokens)
+// + 2 clocks with event_sort
 // (release -> next ray loaded), issued events = all of them on a miss, at
 // most hit index + TREE_HEIGHT + 1 on a hit; the same with SECONDARY = 1.
 // Handshake: valid/ready out through csgrt_skid; when a result is due and
@@ -148,14 +157,16 @@ module csgrt_walker #(
     localparam CB  = $clog2(LOOK_BEHIND + 1);
     // the look-behind run {count, slots, entering, same_t} (SECONDARY)
     localparam RW  = (SECONDARY != 0) ? CB + LBK * (H + 2) : 0;
-    // token tag: {run (SECONDARY), seq, skip, last, t, leaf, slot, entering}
-    localparam BGW = 3 + TW + LB + H + 1;
+    // token tag: {run (SECONDARY), seq, skip, last, probe, later, t, leaf,
+    // slot, entering}
+    localparam BGW = 5 + TW + LB + H + 1;
     localparam GW  = BGW + RW;
     // record: {flags_after (LOOK_AHEAD), run (SECONDARY), hit, t, leaf, slot,
     // entering, from, to, flags_before, payload}
     localparam LA  = (SECONDARY != 0 && LOOK_AHEAD != 0) ? 1 : 0;
     localparam BOW = 1 + TW + LB + H + 1 + 2 * MB + NS + PAYLOAD_WIDTH;
     localparam OW  = BOW + RW + LA * NS;
+    localparam LEAF_POS = PAYLOAD_WIDTH + NS + 2 * MB + 1 + H;   // leaf's place in the record
 
     reg                     act_q;           // a ray is being issued
     reg                     seq_q;           // its bank
@@ -173,40 +184,65 @@ module csgrt_walker #(
     wire          t_seq  = tg[BGW-1];
     wire          t_skip = tg[BGW-2];
     wire          t_last = tg[BGW-3];
+    wire          t_probe = tg[BGW-4];
+    wire          t_later = tg[BGW-5];
     wire [TW-1:0] t_t    = tg[LB+H+1 +: TW];
     wire [LB-1:0] t_leaf = tg[H+1 +: LB];
     wire [H-1:0]  t_slot = tg[1 +: H];
     wire          t_ent  = tg[0];
     wire [MB-1:0] c_from = tc[MB +: MB];
     wire [MB-1:0] c_to   = tc[0 +: MB];
-    wire          live   = tv && !done_q[t_seq];
-    wire          res_hit  = live && !t_skip && tc[CW-1 -: 2] == 2'd2 && c_from != c_to;
+    wire          border = tc[CW-1 -: 2] == 2'd2 && c_from != c_to;
+    wire          live_tok = tv && !done_q[t_seq];
+    reg           pend_q;                     // a hit waits for its surface (below)
+    // a token of the walk: not a probe, and no hit of its ray pending
+    wire          live   = live_tok && !t_probe && !pend_q;
+    wire          res_hit  = live && !t_skip && border;
     wire          res_miss = live && !res_hit && t_last;
-    // what the result stage does (the look-ahead, when built, decides):
-    // res a record goes out, fin_hit it is the ray's hit (the ray is done),
-    // la_stall the walker waits for a look-ahead answer
+    // what the result stage does: res a record goes out, fin_hit it is the
+    // ray's hit (the ray is done), la_stall the walker waits for a
+    // look-ahead answer. The walk (with the look-ahead when built) proposes
+    // a record (w_*); a hit whose surface is not yet decided waits (pend_q).
     wire          res, fin_hit, la_stall;
+    wire          w_out, w_hit, w_dec;
+    wire [LB-1:0] w_sleaf;
+    wire [TW-1:0] w_t;
+    wire [OW-1:0] w_rec;
     wire          sk_ready;
     wire          ce = !(res && !sk_ready) && !la_stall;
 
     // ---- issue --------------------------------------------------------------
+    // The hit's surface (docs/numerics.md section 5): an event at the same t
+    // as the ray's previous one is a later member of a tie group; before its
+    // own token a probe token goes into the tree with the flags before the
+    // group (gfl_q): its classification says whether crossing that event
+    // alone from there is a border (the first member's own token says it).
+    // A probe toggles nothing and is neither hit nor miss.
+    reg           gv_q;                       // the ray has issued an event (its t: gt_q)
+    reg  [TW-1:0] gt_q;
+    reg  [NS-1:0] gfl_q;                      // flags before the current tie group
+    reg           pr_q;                       // the head event's probe is issued
     wire [NS-1:0] fl_cur = seq_q ? fl1_q : fl0_q;
     wire          stop   = done_q[seq_q] || (fin_hit && t_seq == seq_q);
     wire          issue  = ce && act_q && !stop;
-    wire          skip   = !ev_valid_i || (fl_cur[ev_slot_i] == ev_entering_i);
-    wire          last   = !ev_valid_i || ev_last_i;
+    wire          later  = ev_valid_i && gv_q && ev_t_i == gt_q;
+    wire          probe  = later && !pr_q;
+    wire [NS-1:0] fl_tok = probe ? gfl_q : fl_cur;   // the flags the token is classified with
+    wire          skip   = !ev_valid_i || (fl_tok[ev_slot_i] == ev_entering_i);
+    wire          toggle = !skip && !probe;   // the token crosses (flag toggled)
+    wire          last   = !probe && (!ev_valid_i || ev_last_i);
     wire          in_fl_next;                 // a token of bank !seq_q in flight
     wire          load   = ce && !act_q && ray_valid_i && !in_fl_next;
-    assign ev_pop_o   = issue && ev_valid_i;
+    assign ev_pop_o   = issue && ev_valid_i && !probe;
     assign ray_done_o = ce && act_q && (stop || last);
 
-    wire [BGW-1:0] tag_base = {seq_q, skip, last, ev_t_i, ev_leaf_i, ev_slot_i, ev_entering_i};
+    wire [BGW-1:0] tag_base = {seq_q, skip, last, probe, later, ev_t_i, ev_leaf_i, ev_slot_i, ev_entering_i};
     wire [GW-1:0]  tag_in;
 
     csgrt_class_tree #(.TREE_HEIGHT(H), .MAT_BITS(MB), .TAG_WIDTH(GW)) u_tree (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce),
         .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
-        .valid_i(issue), .flags_i(fl_cur), .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
+        .valid_i(issue), .flags_i(fl_tok), .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
         .valid_o(tv), .class_o(tc), .tag_o(tg));
 
     // ---- flags just before the hit --------------------------------------
@@ -230,13 +266,24 @@ module csgrt_walker #(
         if (ce) begin
             sh_valid_q <= {sh_valid_q[H-2:0], issue};
             sh_seq_q   <= {sh_seq_q[H-2:0], seq_q};
-            sh_skip_q  <= {sh_skip_q[H-2:0], skip};
+            sh_skip_q  <= {sh_skip_q[H-2:0], !toggle};
             sh_slot_q  <= {sh_slot_q[H*(H-1)-1:0], ev_slot_i};
-            if (issue && !skip) begin
+            if (issue && probe) pr_q <= 1'b1;
+            if (issue && !probe) begin
+                pr_q <= 1'b0;
+                if (ev_valid_i) begin
+                    gv_q <= 1'b1;
+                    gt_q <= ev_t_i;
+                    if (!later) gfl_q <= fl_cur;
+                end
+            end
+            if (issue && toggle) begin
                 if (seq_q) fl1_q[ev_slot_i] <= !fl1_q[ev_slot_i];
                 else       fl0_q[ev_slot_i] <= !fl0_q[ev_slot_i];
             end
             if (load) begin
+                gv_q <= 1'b0;
+                pr_q <= 1'b0;
                 if (seq_q) begin
                     fl0_q <= ray_flags_i;
                     pl0_q <= ray_payload_i;
@@ -249,6 +296,8 @@ module csgrt_walker #(
         if (!rst_ni) begin
             act_q      <= 1'b0;
             seq_q      <= 1'b0;
+            gv_q       <= 1'b0;
+            pr_q       <= 1'b0;
             done_q     <= 2'b00;
             sh_valid_q <= {H{1'b0}};
         end else if (ce) begin
@@ -269,6 +318,51 @@ module csgrt_walker #(
                                       : {{(BOW-PAYLOAD_WIDTH){1'b0}}, t_pl};
     wire [OW-1:0]  rec;
     wire [OW-1:0]  rec_o;
+
+    // ---- the hit's surface ---------------------------------------------------
+    // The first event of the hit's tie group, in order, that is a border
+    // alone from the flags before the group: tracked over the walk's tokens
+    // (gf_*: the current group at the output), and after a hit whose group
+    // has none yet, over the ray's next tokens (pend_q: the record waits)
+    // until one is, or the group ends (a later t, or the ray's last event):
+    // then the hit leaf.
+    reg          pb_surf_q;                   // the last probe: its event alone is a border
+    reg          gf_found_q;                  // the current group has its surface
+    reg [LB-1:0] gf_leaf_q;
+    wire         tok_surf  = t_later ? pb_surf_q : (!t_skip && border);
+    wire         grp_found = (t_later && gf_found_q) || tok_surf;      // with this token
+    wire [LB-1:0] grp_leaf = (t_later && gf_found_q) ? gf_leaf_q : t_leaf;
+    reg  [TW-1:0] pend_t_q;
+    reg  [OW-1:0] pend_rec_q;
+    wire         obs      = live_tok && !t_probe && pend_q;            // a token after a pending hit
+    wire         pend_same = t_t == pend_t_q;
+    wire         pend_surf = obs && pend_same && pb_surf_q;            // t_later: same t, after the hit
+    wire         p_out    = obs && (pend_surf || !pend_same || t_last);
+    wire         w_park   = w_out && w_hit && !w_dec;                  // the walk's hit waits
+    assign res     = (w_out && !w_park) || p_out;
+    assign fin_hit = (w_out && w_hit && !w_park) || p_out;
+    wire [OW-1:0] rec_out = p_out ? pend_rec_q : w_rec;
+    wire [LB-1:0] rec_leaf = rec_out[LEAF_POS +: LB];                 // the hit leaf (miss: 0)
+    wire [LB-1:0] leaf_out = p_out ? (pend_surf ? t_leaf : rec_leaf) : (w_hit ? w_sleaf : rec_leaf);
+    assign rec = {rec_out[OW-1:LEAF_POS+LB], leaf_out, rec_out[LEAF_POS-1:0]};
+    always @(posedge clk_i) begin
+        if (ce) begin
+            if (live_tok && t_probe) pb_surf_q <= !t_skip && border;
+            if (live_tok && !t_probe) begin
+                gf_found_q <= grp_found;
+                gf_leaf_q  <= grp_leaf;
+            end
+            if (w_park) begin
+                pend_t_q   <= w_t;
+                pend_rec_q <= w_rec;
+            end
+        end
+        if (!rst_ni) pend_q <= 1'b0;
+        else if (ce) begin
+            if (w_park) pend_q <= 1'b1;
+            else if (p_out) pend_q <= 1'b0;
+        end
+    end
     csgrt_skid #(.WIDTH(OW)) u_out (
         .clk_i(clk_i), .rst_ni(rst_ni),
         .valid_i(res), .ready_o(sk_ready), .data_i(rec),
@@ -296,7 +390,7 @@ module csgrt_walker #(
             assign tag_in = {hc_q, run_slot, run_ent, run_same, tag_base};
             integer i;
             always @(posedge clk_i) begin
-                if (ce && issue && !skip) begin
+                if (ce && issue && toggle) begin
                     for (i = LBK - 1; i > 0; i = i - 1) begin
                         hs_q[i*H +: H]   <= hs_q[(i-1)*H +: H];
                         he_q[i]          <= he_q[i-1];
@@ -348,16 +442,26 @@ module csgrt_walker #(
                 wire              start     = normal && res_hit && mat_clear_i[c_to] && !t_last;
                 wire              out_hit   = normal && res_hit && !start;
                 wire              out_miss  = (normal && res_miss) || (end_after && cancel && t_last);
-                assign res      = run_out || out_hit || out_miss;
-                assign fin_hit  = run_out || out_hit;
+                // the hit's surface over the run: its group ends at a later t
+                reg               hg_found_q;      // the hit's group has its surface (hg_leaf_q)
+                reg  [LB-1:0]     hg_leaf_q;
+                wire              x_surf    = run_tok && same_t && pb_surf_q;   // a later member
+                wire              found_now = hg_found_q || x_surf;
+                wire [LB-1:0]     found_leaf= hg_found_q ? hg_leaf_q : t_leaf;
+                wire              run_dec   = !same_t || found_now || t_last;
+                assign w_out    = run_out || out_hit || out_miss;
+                assign w_hit    = run_out || out_hit;
+                assign w_dec    = run_out ? run_dec : grp_found;
+                assign w_sleaf  = run_out ? (found_now ? found_leaf : la_leaf_q) : grp_leaf;
+                assign w_t      = run_out ? la_t_q : t_t;
                 assign la_stall = need_q;
                 // flags after the run: before the token that ends it, or
                 // after the member that ends it
                 wire [NS-1:0]     fa_run    = end_after && !t_skip ? flags_before ^ slot_bit : flags_before;
                 wire [NS-1:0]     fa_hit    = flags_before ^ slot_bit;
-                assign rec = run_out ? {fa_run, la_run_q, 1'b1, la_t_q, la_leaf_q, la_slot_q, la_ent_q, la_from_q,
-                                        new_to, la_fb_q, la_pl_q}
-                                     : {out_hit ? fa_hit : {NS{1'b0}}, lb_run, rec_base};
+                assign w_rec = run_out ? {fa_run, la_run_q, 1'b1, la_t_q, la_leaf_q, la_slot_q, la_ent_q, la_from_q,
+                                          new_to, la_fb_q, la_pl_q}
+                                       : {out_hit ? fa_hit : {NS{1'b0}}, lb_run, rec_base};
                 assign flags_after_o = rec_o[OW-1 -: NS];
                 assign q_valid_o   = need_q && !q_sent_q;
                 assign q_t_o       = la_t_q;
@@ -380,6 +484,10 @@ module csgrt_walker #(
                             ans_q <= 1'b0;
                             if (run_end) la_act_q <= 1'b0;
                             else if (decided) la_to_q <= new_to;
+                            if (decided && x_surf && !hg_found_q) begin
+                                hg_found_q <= 1'b1;
+                                hg_leaf_q  <= t_leaf;
+                            end
                             if (start) begin
                                 la_act_q  <= 1'b1;
                                 la_seq_q  <= t_seq;
@@ -392,16 +500,21 @@ module csgrt_walker #(
                                 la_fb_q   <= flags_before;
                                 la_pl_q   <= t_pl;
                                 la_run_q  <= lb_run;
+                                hg_found_q <= grp_found;
+                                hg_leaf_q  <= grp_leaf;
                             end
                         end
                     end
                 end
                 wire unused_la = la_seq_q;   // every live token of an open run is its ray's
             end else begin : g_no_la
-                assign res      = res_hit || res_miss;
-                assign fin_hit  = res_hit;
+                assign w_out    = res_hit || res_miss;
+                assign w_hit    = res_hit;
+                assign w_dec    = grp_found;
+                assign w_sleaf  = grp_leaf;
+                assign w_t      = t_t;
                 assign la_stall = 1'b0;
-                assign rec = {lb_run, rec_base};
+                assign w_rec = {lb_run, rec_base};
                 assign flags_after_o = flags_before_o ^ ({{(NS-1){1'b0}}, hit_o} << slot_o);
                 assign q_valid_o   = 1'b0;
                 assign q_t_o       = {TW{1'b0}};
@@ -413,9 +526,12 @@ module csgrt_walker #(
             assign {lb_count_o, lb_slot_o, lb_entering_o, lb_same_t_o} = rec_o[BOW +: RW];
         end else begin : g_pri
             assign tag_in        = tag_base;
-            assign rec           = rec_base;
-            assign res           = res_hit || res_miss;
-            assign fin_hit       = res_hit;
+            assign w_rec         = rec_base;
+            assign w_out         = res_hit || res_miss;
+            assign w_hit         = res_hit;
+            assign w_dec         = grp_found;
+            assign w_sleaf       = grp_leaf;
+            assign w_t           = t_t;
             assign la_stall      = 1'b0;
             assign q_valid_o     = 1'b0;
             assign q_t_o         = {TW{1'b0}};

@@ -166,6 +166,10 @@ std::vector<Scenario> scenarios(int bits) {
     std::vector<Scenario> v;
     for (const char* f : {"default", "basic", "csg_mix", "quadrics", "rotated"})
         v.push_back({f, compile(parse_scene_file(std::string("scenes/") + f + ".pov"), bits)});
+    // shared faces: tie groups on every pixel, edges where the hit reports
+    // another surface than its crossing's
+    for (const char* f : {"fig06_add_shared", "fig07_sub_shared"})
+        v.push_back({f, compile(parse_scene_file(std::string("scenes/paper/") + f + ".pov"), bits)});
     for (auto& s : kInline) {
         const std::string text = std::string("camera { location <0.7, 2.3, -5> look_at <0, 0, 0> }\n"
                                              "light_source { <-4, 6, -5> color rgb <1, 1, 1> }\n") + s[1];
@@ -184,7 +188,7 @@ TraceOptions model_options() {
 }
 
 std::vector<RayCase> make_rays(const CompiledScene& cs, TiePolicy ties, int grid_x, int grid_y, int n_random,
-                               uint64_t seed) {
+                               uint64_t seed, bool tie_scan = false) {
     std::vector<RayCase> out;
     const Formats& fmt = cs.fmt;
     auto add = [&](const RayFx& r) {
@@ -222,7 +226,41 @@ std::vector<RayCase> make_rays(const CompiledScene& cs, TiePolicy ties, int grid
         }
         add(r);
     }
+    // With tie_scan, tie groups (docs/numerics.md section 5, the hit's surface): camera
+    // rays of a 640x480 view whose hit reports another surface than its
+    // crossing's leaf (rare: an edge at this width's resolution), all of
+    // them, and a sample of hits tied with other events (probes, hits held
+    // for their group).
+    if (!tie_scan) return out;
+    CompiledScene fine = cs;
+    fine.width = 640, fine.height = 480;
+    std::vector<RayFx> tied;
+    for (int y = 0; y < fine.height; ++y)
+        for (int x = 0; x < fine.width; ++x) {
+            const RayFx r = camera_ray_fx(fine, x, y);
+            TraceResult<i64> tr;
+            try {
+                tr = trace_primary_fx(cs, r, ties, false, model_options());
+            } catch (const std::logic_error&) {
+                continue;
+            }
+            if (!tr.hit) continue;
+            if (tr.leaf != tr.cross_leaf) {
+                add(r);
+            } else if (tied.size() < 4096 && rng() % 16 == 0) {
+                const TraceResult<i64> d = trace_primary_fx(cs, r, ties, true, model_options());
+                if (std::count_if(d.events.begin(), d.events.end(), [&](const Event<i64>& e) { return e.t == d.t; }) > 1)
+                    tied.push_back(r);
+            }
+        }
+    for (int k = 0; k < n_random / 4 && !tied.empty(); ++k) add(tied[rng() % tied.size()]);
     return out;
+}
+
+// Scenes with shared faces, whose rays make_rays() scans for tie groups.
+bool tie_scene(const std::string& name) {
+    return name.rfind("fig", 0) == 0 || name.find("touching") != std::string::npos ||
+           name.find("twice") != std::string::npos;
 }
 
 std::string describe(const CompiledScene& cs, const RayCase& c, const std::vector<uint8_t>* rtl_flags,
@@ -249,6 +287,7 @@ std::string describe(const CompiledScene& cs, const RayCase& c, const std::vecto
 
 struct RunStats {
     uint64_t rays = 0, hits = 0, events = 0, popped = 0, cycles = 0, leaves = 0;
+    uint64_t surface = 0;   // hits whose reported surface is not the crossing's leaf (a tie group)
 };
 
 template <class P>
@@ -327,7 +366,7 @@ void run(const Scenario& sc, TiePolicy ties, const std::vector<RayCase>& rays, d
                 if (c.want.hit && o.hit) {
                     field("t", o.t, c.want.t);
                     field("leaf", o.leaf, c.want.leaf);
-                    field("slot", o.slot, cs.layout.leaf_slot[c.want.leaf]);
+                    field("slot", o.slot, cs.layout.leaf_slot[c.want.cross_leaf]);
                     field("entering", o.entering, c.want.entering);
                     field("from", o.from, c.want.border.from);
                     field("to", o.to, c.want.border.to);
@@ -338,7 +377,7 @@ void run(const Scenario& sc, TiePolicy ties, const std::vector<RayCase>& rays, d
                     // that with secondary rays, so it is not compared here.)
                     std::vector<uint8_t> before = c.want.origin_flags;
                     for (const auto& e : c.want.events) {
-                        if (e.t == c.want.t && e.leaf == c.want.leaf && e.entering == c.want.entering) break;
+                        if (e.t == c.want.t && e.leaf == c.want.cross_leaf && e.entering == c.want.entering) break;
                         if (bool(before[e.leaf]) != e.entering) before[e.leaf] = e.entering;
                     }
                     std::vector<uint8_t> want_slots(256, 0);
@@ -396,7 +435,10 @@ void run(const Scenario& sc, TiePolicy ties, const std::vector<RayCase>& rays, d
             st.popped += ev.size();
         }
     }
-    for (const RayCase& c : rays) st.hits += c.want.hit, st.events += c.want.events.size();
+    for (const RayCase& c : rays) {
+        st.hits += c.want.hit, st.events += c.want.events.size();
+        st.surface += c.want.hit && c.want.leaf != c.want.cross_leaf;
+    }
     st.rays += rays.size();
     st.cycles += cyc;
     st.leaves += total_in;
@@ -414,18 +456,25 @@ int scaled(int x) { return std::max(4, int(x * tb::scale())); }
 template <class P>
 void run_all(uint64_t seed) {
     const std::vector<Scenario> scs = scenarios(P::kBits);
+    uint64_t surface = 0;
     for (TiePolicy ties : {TiePolicy::Paper, TiePolicy::Regular}) {
         RunStats st;
         for (const Scenario& sc : scs) {
-            const auto rays = make_rays(sc.cs, ties, scaled(16), scaled(12), scaled(160), seed++);
+            const auto rays = make_rays(sc.cs, ties, scaled(16), scaled(12), scaled(160), seed++, tie_scene(sc.name));
             run<P>(sc, ties, rays, 0.2, 0.3, seed++, st);
         }
+        surface += st.surface;
+        std::printf("walk BITS=%d %s: %llu hits report another surface than their crossing's leaf (tie groups)\n",
+                    P::kBits, ties == TiePolicy::Paper ? "paper" : "regular", (unsigned long long)st.surface);
         std::printf("walk BITS=%d %s: %llu rays (%llu hits) in %zu scenes, %llu leaf results, %llu events ahead "
                     "(%llu popped), %llu cycles\n",
                     P::kBits, ties == TiePolicy::Paper ? "paper" : "regular", (unsigned long long)st.rays,
                     (unsigned long long)st.hits, scs.size(), (unsigned long long)st.leaves,
                     (unsigned long long)st.events, (unsigned long long)st.popped, (unsigned long long)st.cycles);
     }
+    // the scanned rays must exercise the hit's surface rule (probes, a held
+    // hit); at 24 bits the shared-face scenes have no such edge in 640x480
+    if (P::kBits <= 16) EXPECT_GT(surface, 0u) << "no ray whose hit reports another surface than its crossing's";
 }
 
 TEST(Walk, Bits16) { run_all<P16>(tb::seed(1600)); }
@@ -618,7 +667,7 @@ std::vector<RayCase> edge_rays(const CompiledScene& cs, TiePolicy ties, int n_pa
 }
 
 std::vector<SecCase> make_sec_cases(const CompiledScene& cs, TiePolicy ties, int grid_x, int grid_y, int n_random,
-                                    int n_edge, uint64_t seed, bool children) {
+                                    int n_edge, uint64_t seed, bool children, bool tie_scan = false) {
     std::mt19937_64 rng(seed);
     const int F = cs.fmt.frac;
     const int n = int(cs.leaves.size());
@@ -630,7 +679,7 @@ std::vector<SecCase> make_sec_cases(const CompiledScene& cs, TiePolicy ties, int
             c.lb_slot[k] = int(rng() & 0xff), c.lb_ent[k] = int(rng() & 1), c.lb_same[k] = int(rng() & 1);
     };
     std::vector<SecCase> out;
-    std::vector<RayCase> prim = make_rays(cs, ties, grid_x, grid_y, n_random, seed);
+    std::vector<RayCase> prim = make_rays(cs, ties, grid_x, grid_y, n_random, seed, tie_scan);
     for (RayCase& c : edge_rays(cs, ties, n_edge, rng)) prim.push_back(std::move(c));
     for (const RayCase& rc : prim) {
         SecCase c;
@@ -898,7 +947,7 @@ void run_sec(const Scenario& sc, TiePolicy ties, const std::vector<SecCase>& ray
                 if (c.want.hit && o.base.hit) {
                     field("t", o.base.t, c.want.t);
                     field("leaf", o.base.leaf, c.want.leaf);
-                    field("slot", o.base.slot, cs.layout.leaf_slot[c.want.leaf]);
+                    field("slot", o.base.slot, cs.layout.leaf_slot[c.want.cross_leaf]);
                     field("entering", o.base.entering, c.want.entering);
                     field("from", o.base.from, c.want.border.from);
                     field("to", o.base.to, c.want.border.to);
@@ -1117,7 +1166,8 @@ void run_la_all(uint64_t seed) {
     uint64_t queries = 0, beyond = 0;
     for (TiePolicy ties : {TiePolicy::Paper, TiePolicy::Regular}) {
         for (const Scenario& sc : scs) {
-            const auto rays = make_sec_cases(sc.cs, ties, scaled(12), scaled(9), scaled(80), scaled(24), seed++, true);
+            const auto rays = make_sec_cases(sc.cs, ties, scaled(12), scaled(9), scaled(80), scaled(24), seed++, true,
+                                             tie_scene(sc.name));
             SecStats st;
             run_sec<S>(sc, ties, rays, 0.2, 0.3, 0.3, seed++, st);
             const LaEffect e = la_effect(sc.cs, ties, rays);
@@ -1126,6 +1176,12 @@ void run_la_all(uint64_t seed) {
             total.hit_changed += e.hit_changed;
             queries += st.queries;
             beyond += st.beyond;
+            uint64_t surface = 0;
+            for (const SecCase& c : rays) surface += c.kind == 0 && c.want.hit && c.want.leaf != c.want.cross_leaf;
+            if (surface)
+                std::printf("walk LOOK_AHEAD BITS=%d %s %s: %llu hits report another surface than their crossing's\n",
+                            S::kBits, sc.name.c_str(), ties == TiePolicy::Paper ? "paper" : "regular",
+                            (unsigned long long)surface);
             std::printf("walk LOOK_AHEAD BITS=%d %s %s: %zu rays; the look-ahead moved BORDER to on %llu primary "
                         "hits, the far-side flags on %llu, the hit itself on %llu; %llu queries (%llu with q <= 0)\n",
                         S::kBits, sc.name.c_str(), ties == TiePolicy::Paper ? "paper" : "regular", rays.size(),
