@@ -288,7 +288,7 @@ module csgrt_top #(
                 reg             coef_ok_q;
                 wire [BITS+7:0] q_val;
                 wire            qa_s_ready;
-                always @(posedge clk_i) coef_ok_q <= rst_ni && w_q_valid && !(w_q_valid && w_q_ready);
+                always @(posedge clk_i) coef_ok_q <= rst_ni && w_q_valid && !w_q_ready;
                 assign leaf_c_addr = w_q_leaf;
                 assign w_q_ready   = qa_s_ready && coef_ok_q;
                 csgrt_quadric_at #(.BITS(BITS), .USER_WIDTH(1)) u_beyond (

@@ -407,8 +407,9 @@ module csgrt_walker #(
             wire [RW-1:0] lb_run = res_hit ? tg[GW-1:BGW] : {RW{1'b0}};
             if (LA != 0) begin : g_la
                 // ---- the look-ahead run ----------------------------------------
-                reg               la_act_q;        // a run is open (for ray bank la_seq_q)
-                reg               la_seq_q;
+                // a run is open; every live token while it is belongs to
+                // the run's ray (results come out in ray order)
+                reg               la_act_q;
                 reg  [TW-1:0]     la_t_q;          // the hit's t
                 reg  [MB-1:0]     la_from_q, la_to_q;
                 reg  [LB-1:0]     la_leaf_q;
@@ -490,7 +491,6 @@ module csgrt_walker #(
                             end
                             if (start) begin
                                 la_act_q  <= 1'b1;
-                                la_seq_q  <= t_seq;
                                 la_t_q    <= t_t;
                                 la_from_q <= c_from;
                                 la_to_q   <= c_to;
@@ -506,7 +506,6 @@ module csgrt_walker #(
                         end
                     end
                 end
-                wire unused_la = la_seq_q;   // every live token of an open run is its ray's
             end else begin : g_no_la
                 assign w_out    = res_hit || res_miss;
                 assign w_hit    = res_hit;

@@ -24,11 +24,7 @@ using Top = Vtb_camera;
 using csgrt::i64;
 
 // the repository root, from this file's absolute path (tb/camera/tb_camera.cpp)
-std::string repo_root() {
-    std::string f = __FILE__;
-    for (int i = 0; i < 3; ++i) f = f.substr(0, f.find_last_of('/'));
-    return f;
-}
+using tb::repo_root;
 const std::vector<std::string> kScenes = {"basic", "csg_mix", "default", "quadrics", "rotated"};
 
 inline void set_field(uint64_t& w, int lsb, int width, i64 v) {

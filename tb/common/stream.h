@@ -17,6 +17,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace tb {
@@ -173,5 +174,33 @@ inline int64_t sext(uint64_t v, int width) {
     return int64_t((v ^ m) - m);
 }
 inline uint64_t mask(int width) { return width >= 64 ? ~uint64_t(0) : (uint64_t(1) << width) - 1; }
+
+// A signed field of `width` bits at `lsb` of a port, narrow (an integer)
+// or wide (VlWide): set from v (two's complement, truncated) and read back
+// sign-extended.
+template <class W>
+inline void set_field(W& w, int lsb, int width, int64_t v) {
+    if constexpr (std::is_integral_v<W>) {
+        const uint64_t m = mask(width) << lsb;
+        w = W((uint64_t(w) & ~m) | ((uint64_t(v) << lsb) & m));
+    } else {
+        set_bits(w, lsb, width, uint64_t(v));
+    }
+}
+template <class W>
+inline int64_t get_field(const W& w, int lsb, int width) {
+    if constexpr (std::is_integral_v<W>)
+        return sext(uint64_t(w) >> lsb, width);
+    else
+        return sext(get_bits(w, lsb, width), width);
+}
+
+// The repository's root (this file is tb/common/stream.h): the benches
+// read scenes and rtl/srgb_lut.hex from there.
+inline std::string repo_root() {
+    std::string f = __FILE__;
+    for (int i = 0; i < 3; ++i) f = f.substr(0, f.find_last_of('/'));
+    return f;
+}
 
 }  // namespace tb

@@ -32,28 +32,10 @@ using csgrt::i64;
 using V3 = std::array<i64, 3>;
 using Coef = std::array<i64, csgrt::kNumCoefs>;
 
-std::string repo_root() {
-    std::string f = __FILE__;
-    for (int i = 0; i < 3; ++i) f = f.substr(0, f.find_last_of('/'));
-    return f;
-}
+using tb::repo_root;
 
-template <class W>
-inline void set_field(W& w, int lsb, int width, i64 v) {
-    if constexpr (std::is_integral_v<W>) {
-        const uint64_t m = tb::mask(width) << lsb;
-        w = W((uint64_t(w) & ~m) | ((uint64_t(v) << lsb) & m));
-    } else {
-        tb::set_bits(w, lsb, width, uint64_t(v));
-    }
-}
-template <class W>
-inline i64 get_field(const W& w, int lsb, int width) {
-    if constexpr (std::is_integral_v<W>)
-        return tb::sext(uint64_t(w) >> lsb, width);
-    else
-        return tb::sext(tb::get_bits(w, lsb, width), width);
-}
+using tb::get_field;
+using tb::set_field;
 
 struct Request {
     csgrt::RayFx ray;

@@ -31,11 +31,7 @@ using Top = Vtb_shade;
 using csgrt::i64;
 using csgrt::i128;
 
-std::string repo_root() {
-    std::string f = __FILE__;
-    for (int i = 0; i < 3; ++i) f = f.substr(0, f.find_last_of('/'));
-    return f;
-}
+using tb::repo_root;
 // csgrt_srgb reads rtl/srgb_lut.hex relative to the working directory
 void chdir_root() {
     if (chdir(repo_root().c_str()) != 0) std::perror("chdir");
