@@ -136,7 +136,8 @@
 //                      the tie order (Fig. 17: up to 26 coplanar plinth
 //                      tops) the rest stay crossed; a shadow ray that later
 //                      enters the other half-spaces of such a plinth, above
-//                      its top, finds it "inside" (Fig. 17, 20 to 32 bits);
+//                      its top, finds it "inside" (Fig. 17, 20 to 32 bits;
+//                      0 since the near side undoes the whole tie group);
 //   own-leaf look-ahead  a medium violation where the look-ahead after a
 //                      transparent hit crossed the hit leaf's own far side:
 //                      its test "the hit point already lies beyond the next

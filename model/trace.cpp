@@ -246,22 +246,41 @@ thread_local bool t_lookahead_passed_later = false;
 // here like any other: a culled trace then reports what the full one does
 // (no culled leaf has an event at the hit's t, complete_culled()).
 template <typename T>
-int surface_leaf(const CompiledScene& cs, const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed,
-                 const std::vector<uint8_t>& flags, size_t hit) {
+int surface_leaf(const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed, std::vector<uint8_t>& flags,
+                 ClassTree& tree, size_t hit) {
     const T t = ahead[hit].t;
     size_t g0 = hit, g1 = hit + 1;
     while (g0 > 0 && ahead[g0 - 1].t == t) --g0;
     while (g1 < ahead.size() && ahead[g1].t == t) ++g1;
-    if (g1 - g0 == 1) return ahead[hit].leaf;
-    std::vector<uint8_t> before = flags;   // flags after the hit's toggle
-    for (size_t k = crossed.size(); k-- > 0 && crossed[k] >= g0;) before[ahead[crossed[k]].leaf] = !ahead[crossed[k]].entering;
+    // The first event of the group was classified against the flags before
+    // the group: if it is the hit, it is the surface.
+    if (g0 == hit) return ahead[hit].leaf;
+    // The tree (holding the flags after the hit's toggle) taken back to the
+    // flags before the group, the candidates classified there, and the
+    // group's crossings done again.
+    size_t c0 = crossed.size();
+    while (c0 > 0 && crossed[c0 - 1] >= g0) --c0;
+    for (size_t k = crossed.size(); k-- > c0;) {
+        const Event<T>& e = ahead[crossed[k]];
+        flags[e.leaf] = !e.entering;
+        tree.set_flag(e.leaf, !e.entering);
+    }
+    int surface = ahead[hit].leaf;
     for (size_t k = g0; k < g1; ++k) {
         const Event<T>& e = ahead[k];
-        if (bool(before[e.leaf]) == e.entering) continue;
-        const Class c = classify(cs.program, before.data(), cs.leaf_material.data(), e.leaf, e.entering);
-        if (c.kind == Class::BORDER && c.from != c.to) return e.leaf;
+        if (bool(flags[e.leaf]) == e.entering) continue;
+        const Class c = tree.classify(e.leaf, e.entering);
+        if (c.kind == Class::BORDER && c.from != c.to) {
+            surface = e.leaf;
+            break;
+        }
     }
-    return ahead[hit].leaf;
+    for (size_t k = c0; k < crossed.size(); ++k) {
+        const Event<T>& e = ahead[crossed[k]];
+        flags[e.leaf] = e.entering;
+        tree.set_flag(e.leaf, e.entering);
+    }
+    return surface;
 }
 
 // The walk shared by both arithmetics. `flags` holds the origin flags on
@@ -301,7 +320,7 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
         if (cl.kind == Class::BORDER && cl.from != cl.to) {
             res.hit = true;
             res.t = e.t;
-            res.leaf = surface_leaf(cs, ahead, crossed, flags, i);
+            res.leaf = surface_leaf(ahead, crossed, flags, tree, i);
             res.cross_leaf = e.leaf;
             res.entering = e.entering;
             res.border = cl;
@@ -312,11 +331,16 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             // surface the hit point does not lie beyond, have not happened
             // at the hit point; the near side (shadow and reflected rays)
             // is before them too (docs/effects.md).
-            // At most kLookBehind crossings are undone (the RTL carries
-            // that many beside the hit).
-            const size_t oldest = crossed.size() - 1 > size_t(kLookBehind) ? crossed.size() - 1 - kLookBehind : 0;
+            // Every crossing of the hit's tie group is undone (the flags
+            // before the group: the RTL keeps them as the group starts), and
+            // of the crossings before the group at most kLookBehind (the RTL
+            // carries that many beside the hit).
+            size_t group = crossed.size() - 1;   // crossed[group]: the group's first crossing
+            for (; group > 0 && ahead[crossed[group - 1]].t == e.t; --group)
+                res.flags_before[ahead[crossed[group - 1]].leaf] = !ahead[crossed[group - 1]].entering;
+            const size_t oldest = group > size_t(kLookBehind) ? group - kLookBehind : 0;
             res.flags_hit_near = res.flags_before;
-            for (size_t k = crossed.size() - 1; k-- > oldest;) res.near_run.push_back(ahead[crossed[k]]);
+            for (size_t k = group; k-- > oldest;) res.near_run.push_back(ahead[crossed[k]]);
             for (const Event<T>& b : res.near_run) {
                 if (!(b.t == e.t || !beyond(b, e.t))) break;
                 res.flags_before[b.leaf] = !b.entering;

@@ -72,11 +72,12 @@ struct TraceResult {
     std::vector<uint8_t> flags_before; // leaf flags just before the hit (near side)
     std::vector<uint8_t> flags_after;  // leaf flags just after it (far side)
     // The look-behind's inputs, as the RTL hands them to child rays:
-    // flags_hit_near are the flags just before the hit crossing (no
-    // look-behind), near_run the up to kLookBehind valid crossings before
-    // the hit, most recent first; flags_before = flags_hit_near with the
-    // longest prefix of near_run undone whose events lie at the hit's t or
-    // whose surface the hit point does not lie beyond.
+    // flags_hit_near are the flags just before the hit's tie group (every
+    // crossing at the hit's t undone), near_run the up to kLookBehind valid
+    // crossings before that group, most recent first; flags_before =
+    // flags_hit_near with the longest prefix of near_run undone whose events
+    // lie at the hit's t (none: the group is undone already) or whose
+    // surface the hit point does not lie beyond.
     std::vector<uint8_t> flags_hit_near;
     std::vector<Event<T>> near_run;
     // diagnostics: the sorted events ahead, and the origin flags

@@ -25,29 +25,33 @@
 // previous event gets a probe token first (the flags before the group, no
 // toggle, no result of its own); a hit whose group has no such event yet is
 // held (pend_q) until the ray's next tokens decide it.
-// flags_before_o (bit per slot): the flags just before the hit, i.e. the
-// ray's flag bank with the toggles of the hit token and of the ray's tokens
-// issued after it (still in flight: a shadow of the tree's pipeline) undone.
+// flags_before_o (bit per slot): the flags just before the hit's tie group
+// (docs/effects.md, look-behind: every crossing at the hit's t undone), kept
+// at the output as the group's first token passes; a token's flags there:
+// the ray's flag bank with the toggles of that token and of the ray's
+// tokens issued after it (still in flight: a shadow of the tree's pipeline)
+// undone.
 // On a miss every field but payload_o is zero.
 //
 // Secondary rays (SECONDARY = 1; with SECONDARY = 0 these outputs are 0 and
 // their logic is not built), beside each hit record (on a miss all 0):
 //   flags_after_o  the flags just after the hit crossing (the far side,
 //                  for a continuation or transmitted ray:
-//                  TraceResult::flags_after): with LOOK_AHEAD = 0
-//                  flags_before_o with the hit's slot toggled; with
-//                  LOOK_AHEAD = 1 the flags after the look-ahead run below,
-//                  carried in the record.
+//                  TraceResult::flags_after), carried in the record:
+//                  with LOOK_AHEAD = 0 the flags before the hit token with
+//                  its slot toggled; with LOOK_AHEAD = 1 the flags after
+//                  the look-ahead run below.
 //   lb_count_o     0..LOOK_BEHIND: the look-behind run, the valid (non-skip)
-//   lb_slot_o      tokens of the ray issued before the hit token, most
+//   lb_slot_o      tokens of the ray issued before the hit's tie group, most
 //   lb_entering_o  recent first (TraceResult::near_run): entry k's slot at
 //   lb_same_t_o    [k*TREE_HEIGHT +: TREE_HEIGHT], its entering and
 //                  "t equals the hit's t" at bit k; entries at and past
 //                  lb_count_o are 0. Each token carries in its tag the run
 //                  as it stood when the token was issued (a history of the
 //                  ray's last LOOK_BEHIND valid tokens, cleared when a ray
-//                  is loaded), so tokens issued after the hit (still in the
-//                  tree, undone for flags_before_o) are not part of it.
+//                  is loaded; a later member of a tie group carries the run
+//                  as it stood before the group), so tokens issued after
+//                  the hit (still in the tree) are not part of it.
 // flags_before_o, lb_*_o and the hit's position make the info record of
 // the near-side children (shadow, reflected) for csgrt_event_sort, which
 // applies the look-behind fix-up; flags_after_o that of far-side ones.
@@ -165,7 +169,8 @@ module csgrt_walker #(
     // entering, from, to, flags_before, payload}
     localparam LA  = (SECONDARY != 0 && LOOK_AHEAD != 0) ? 1 : 0;
     localparam BOW = 1 + TW + LB + H + 1 + 2 * MB + NS + PAYLOAD_WIDTH;
-    localparam OW  = BOW + RW + LA * NS;
+    localparam FA  = (SECONDARY != 0) ? 1 : 0;   // flags_after rides in the record
+    localparam OW  = BOW + RW + FA * NS;
     localparam LEAF_POS = PAYLOAD_WIDTH + NS + 2 * MB + 1 + H;   // leaf's place in the record
 
     reg                     act_q;           // a ray is being issued
@@ -260,6 +265,12 @@ module csgrt_walker #(
     end
     assign in_fl_next = busy_other;
     wire [NS-1:0] flags_before = (t_seq ? fl1_q : fl0_q) ^ undo;
+    // the near side starts before the hit's tie group: the flags before the
+    // group's first token, kept as it passes (probes change no flag)
+    reg  [NS-1:0] gs_flags_q;
+    wire [NS-1:0] flags_near = t_later ? gs_flags_q : flags_before;
+    always @(posedge clk_i)
+        if (ce && live_tok && !t_probe && !t_later) gs_flags_q <= flags_before;
 
     // ---- state ---------------------------------------------------------------
     always @(posedge clk_i) begin
@@ -314,7 +325,7 @@ module csgrt_walker #(
 
     // ---- output ----------------------------------------------------------------
     wire [PAYLOAD_WIDTH-1:0] t_pl = t_seq ? pl1_q : pl0_q;
-    wire [BOW-1:0] rec_base = res_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_before, t_pl}
+    wire [BOW-1:0] rec_base = res_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_near, t_pl}
                                       : {{(BOW-PAYLOAD_WIDTH){1'b0}}, t_pl};
     wire [OW-1:0]  rec;
     wire [OW-1:0]  rec_o;
@@ -387,7 +398,16 @@ module csgrt_walker #(
                 assign run_ent[g]         = held && he_q[g];
                 assign run_same[g]        = held && ht_q[g*TW +: TW] == ev_t_i;
             end
-            assign tag_in = {hc_q, run_slot, run_ent, run_same, tag_base};
+            // a later member of a tie group carries the run as it stood
+            // before the group (the crossings of the group are undone
+            // whole, by flags_near)
+            wire [RW-1:0] run_now = {hc_q, run_slot, run_ent, run_same};
+            reg  [RW-1:0] grun_q;
+            assign tag_in = {later ? grun_q : run_now, tag_base};
+            always @(posedge clk_i)
+                if (ce && issue && !probe && !later) grun_q <= run_now;
+            wire [NS-1:0] slot_bit = {{(NS-1){1'b0}}, 1'b1} << t_slot;
+            wire [NS-1:0] fa_hit   = flags_before ^ slot_bit;   // after the hit's own crossing
             integer i;
             always @(posedge clk_i) begin
                 if (ce && issue && toggle) begin
@@ -420,7 +440,6 @@ module csgrt_walker #(
                 reg  [RW-1:0]     la_run_q;        // the hit's look-behind run
                 reg               q_sent_q;        // the query for the token at the output is out
                 reg               ans_q, beyond_q; // its answer
-                wire [NS-1:0]     slot_bit  = {{(NS-1){1'b0}}, 1'b1} << t_slot;
                 // the token at the tree's output, examined by the open run
                 wire              run_tok   = la_act_q && live;
                 wire              same_t    = t_t == la_t_q;
@@ -459,7 +478,6 @@ module csgrt_walker #(
                 // flags after the run: before the token that ends it, or
                 // after the member that ends it
                 wire [NS-1:0]     fa_run    = end_after && !t_skip ? flags_before ^ slot_bit : flags_before;
-                wire [NS-1:0]     fa_hit    = flags_before ^ slot_bit;
                 assign w_rec = run_out ? {fa_run, la_run_q, 1'b1, la_t_q, la_leaf_q, la_slot_q, la_ent_q, la_from_q,
                                           new_to, la_fb_q, la_pl_q}
                                        : {out_hit ? fa_hit : {NS{1'b0}}, lb_run, rec_base};
@@ -497,7 +515,7 @@ module csgrt_walker #(
                                 la_leaf_q <= t_leaf;
                                 la_slot_q <= t_slot;
                                 la_ent_q  <= t_ent;
-                                la_fb_q   <= flags_before;
+                                la_fb_q   <= flags_near;
                                 la_pl_q   <= t_pl;
                                 la_run_q  <= lb_run;
                                 hg_found_q <= grp_found;
@@ -513,8 +531,8 @@ module csgrt_walker #(
                 assign w_sleaf  = grp_leaf;
                 assign w_t      = t_t;
                 assign la_stall = 1'b0;
-                assign w_rec = {lb_run, rec_base};
-                assign flags_after_o = flags_before_o ^ ({{(NS-1){1'b0}}, hit_o} << slot_o);
+                assign w_rec = {res_hit ? fa_hit : {NS{1'b0}}, lb_run, rec_base};
+                assign flags_after_o = rec_o[OW-1 -: NS];
                 assign q_valid_o   = 1'b0;
                 assign q_t_o       = {TW{1'b0}};
                 assign q_leaf_o    = {LB{1'b0}};
