@@ -20,7 +20,11 @@
 //                  the hit point in the same direction (shadow_fx)
 //   s_user_i       sideband, returned with every child
 // A request with no child (no flag set) must not be sent; if one is, it is
-// consumed and produces nothing.
+// consumed and produces nothing. A request must not ask for a kind the
+// build does not have (below): s_lights_i must be 0 without SHADOWS,
+// s_reflect_i without REFLECTION, s_refract_i without REFRACTION. Such a
+// flag is ignored (no child; a request with nothing else produces nothing)
+// and stops a simulation ($fatal, outside `SYNTHESIS).
 // Static: light_pos_i, light k axis i at (3k+i)*B (csgrt_top's light_pos,
 // F frac), read when the hit's shadow children are issued.
 // Output, one transaction per child (m_valid_o/m_ready_i), per hit in the
@@ -49,6 +53,27 @@
 //                  with n = normal_fx(p, d). A light with m_lit_o = 0 gets no
 //                  shadow ray: the consumer treats it as dark. 0 for the other kinds.
 //   m_user_o       the hit's s_user_i
+//
+// ---- Effect units (SHADOWS, REFLECTION, REFRACTION; 1 by default) ----------------
+// A build has only the child kinds it is given (csgrt_top passes its own):
+//   REFRACTION 0   none of the refraction datapath: no eta division, eta^2,
+//                  S1..S6 (cos^2, eta cos, eta2 sin2, k, TIR, isqrt(k << F),
+//                  a) or their queues, no Y multipliers and no t sum; the
+//                  sequencer waits for the normal's queue instead (latency
+//                  F+7 clocks shorter, below); the X multipliers and U2 are
+//                  narrower (X's eta factor and U2's |t_i| < 128 are gone:
+//                  X (F+2) x (B+1), U2's input B+1 bits); s_ior_*_i unused.
+//   REFLECTION 0   and REFRACTION 0: no dn (d . n after the flip, its
+//                  rounding and its queue entry), no reflected direction
+//                  r = d - rnd(2 dn n, F) and no d in the child pipeline.
+//                  With REFRACTION 1 the total-internal-reflection fallback
+//                  needs all of that, so only the REFLECT kind goes.
+//   SHADOWS 0      no lv = light - p, light selection or lit sum (X then
+//                  serves REFLECT/TIR and REFRACT); light_pos_i unused.
+// What stays in every build: the front up to the faced normal (H..NDA:
+// the hit point, the gradient, unit(g), n . d and the flip, which shadows
+// need as much as reflection), the X multipliers and U2, which serve every
+// kind (U2's root is also the shadow distance), and the sequencer.
 //
 // ---- Arithmetic (every rounding; rnd(x, k) = (x + 2^(k-1)) >> k, ties up) ----
 //   p_i   = o_i + rnd(t d_i, F)                          hit_point_fx (trace.cpp)
@@ -86,8 +111,9 @@
 //                   L = root + 1 held (3), div(g_j << F, L) (F+2, one
 //                   csgrt_div_core), n_j signed (1)
 //   FD   (2+1)      n_j d_j as n_j comes out   1 multiplier; accumulate n . d
-//   NDA  (1)        face: flip n, d.n when n . d > 0
-//   NDB  (1)        dn = rnd(d.n, F), cos = -dn
+//   NDA  (1)        face: flip n, d.n when n . d > 0   (d.n: REFLECTION or REFRACTION)
+//   NDB  (1)        dn = rnd(d.n, F), cos = -dn   (dn: the same; cos: REFRACTION)
+//   --- REFRACTION only, from here to the eta lines ---
 //   S1   (2)        cos^2, eta cos             2 multipliers
 //   S2   (1)        sin2, rnd(eta cos, F)
 //   S3   (2)        eta2 sin2                  1 multiplier
@@ -99,39 +125,56 @@
 // Per-hit values wait in small queues (csgrt_fifo, LUT RAM) instead of
 // riding along the pipelines: {d, flags, user}, {d} (for FD), {p, in_range},
 // {g} (for the divisions), {eta, eta2}, {eta}, {n, dn}, {rnd(eta cos)},
-// {a, TIR}.
+// {a, TIR} (the last three and the eta ones: REFRACTION; dn: REFLECTION or
+// REFRACTION).
 // Children (one global enable, the output skid buffer's registered ready):
 //   SEQ             the hit register and its pending children, lowest first;
 //                   the next hit is loaded as the last child leaves
 //   C0   (1)        lv = light_k - p and the hit's n, dn, eta, a, d
 //   X/Y  (2)        SHADOW: n_i lv_i; REFLECT, TIR: dn n_i; REFRACT: eta d_i
 //                   and a n_i             6 multipliers shared by every kind
+//                   (Y: REFRACTION only)
 //   C3   (1)        lit = sum > 0 (exact); r; t; the unit's input v
+//                   (lit: SHADOWS; r: REFLECTION or REFRACTION; t: REFRACTION)
 //   U2   (2F+15)    unit(v)                    csgrt_unit #2, 3 multipliers,
 //                   shared by every child (its root is the shadow distance)
 //   skid (1)        output; p, d, in_range and user from the hit's queue
 //                   entry (written at SEQ load, read by the hit's last child)
-// Multipliers: 19 csgrt_mul: T 1 ((F+2) x B), G 3 (B x B), N 1 ((B+2)^2),
-// FD 1 ((F+1) x B), eta^2 1 ((F+8)^2), S1 2 ((F+2)^2, (F+8) x (F+2)),
-// S3 1 ((F+15) x (F+2)), X 3 ((F+8) x (B+1)), Y 3 ((F+8) x (F+1)),
-// U2 3 ((F+8)^2). Dividers: 5 csgrt_div_core (eta, N, U2 x 3); square
-// roots: 3 csgrt_sqrt_core (N, S5, U2). Shared: T, G, N and FD serve the
-// three axes in turn (a hit every third clock); X, Y and U2 serve every
-// child kind (U2's square root is also the shadow distance).
-// yosys 0.23 synth_ecp5 of this module alone, MAX_LIGHTS 8, USER_WIDTH 1:
-//   BITS 16: MULT18X18D 39, LUT4 18.2k + CCU2C 3.4k, FF 11.4k, DPR16X4 246
-//   BITS 24: MULT18X18D 76, LUT4 39.7k + CCU2C 6.7k, FF 20.3k, DPR16X4 354
-// (the five csgrt_div_cores take most of the LUTs: ~2.8k LUT4 each at 16).
+// Multipliers (REFRACTION 1): 19 csgrt_mul: T 1 ((F+2) x B), G 3 (B x B),
+// N 1 ((B+2)^2), FD 1 ((F+1) x B), eta^2 1 ((F+8)^2), S1 2 ((F+2)^2,
+// (F+8) x (F+2)), S3 1 ((F+15) x (F+2)), X 3 ((F+8) x (B+1)),
+// Y 3 ((F+8) x (F+1)), U2 3 ((F+8)^2). Dividers: 5 csgrt_div_core (eta, N,
+// U2 x 3); square roots: 3 csgrt_sqrt_core (N, S5, U2).
+// REFRACTION 0 (any SHADOWS, REFLECTION): 12 csgrt_mul: T, G, N, FD as
+// above, X 3 ((F+2) x (B+1)), U2 3 ((B+1)^2); 4 csgrt_div_core (N, U2 x 3);
+// 2 csgrt_sqrt_core (N, U2).
+// Shared: T, G, N and FD serve the three axes in turn (a hit every third
+// clock); X, Y and U2 serve every child kind (U2's square root is also the
+// shadow distance).
+// yosys 0.23 synth_ecp5 of this module alone, MAX_LIGHTS 8, USER_WIDTH 1,
+// BITS 16, (REFLECTION, REFRACTION) with SHADOWS 1:
+//   (1, 1): MULT18X18D 39, LUT4 17.7k + CCU2C 3.4k, FF 9.5k, DPR16X4 246, DP16KD 3
+//   (1, 0): MULT18X18D 12, LUT4 15.6k + CCU2C 2.5k, FF 7.5k, DPR16X4 188, DP16KD 3
+//   (0, 0): MULT18X18D 12, LUT4 15.4k + CCU2C 2.4k, FF 7.3k, DPR16X4 180, DP16KD 3
+// (BITS 24, (1, 1), an earlier build: MULT18X18D 76, LUT4 39.7k + CCU2C
+// 6.7k, FF 20.3k, DPR16X4 354). The csgrt_div_cores (N's and U2's three)
+// take most of the LUTs in every configuration.
 //
 // ---- Timing --------------------------------------------------------------------
 // Latency (no back-pressure, idle front): 5F+63 clocks from a hit's
-// acceptance to its first child (BITS 12: 108, 16: 128, 24: 168, 32: 208).
+// acceptance to its first child (BITS 12: 108, 16: 128, 24: 168, 32: 208);
+// without REFRACTION 4F+56 (the sequencer takes the hit from the normal's
+// queue, F+7 clocks before S6 would have finished: BITS 12: 92, 16: 108,
+// 24: 140, 32: 172). The consumer (csgrt_raytree) takes children by
+// valid/ready and m_user_o and assumes no latency.
 // Throughput: one child per clock while hits are waiting at the sequencer:
 // a hit's children leave on consecutive clocks and the next hit's first
 // child follows its predecessor's last without a gap. The front accepts a
 // hit every third clock at most, and holds each of its 32 credits for 3F+43
-// clocks: back to back, a hit every max(3, (3F+43)/32) clocks (BITS 12, 16:
-// 3; 24: 3.3; 32: 4.1), so hits with fewer children than that leave gaps.
+// clocks (2F+36 without REFRACTION): back to back, a hit every
+// max(3, (3F+43)/32) clocks (BITS 12, 16: 3; 24: 3.3; 32: 4.1; without
+// REFRACTION 3 up to BITS 32), so hits with fewer children than that leave
+// gaps.
 // At most 32 hits wait between sequencer and output (their p, d, user).
 // Handshake: valid/ready on both sides. s_ready_o depends only on registers
 // (the front's phase and hit count); the child pipeline advances on the
@@ -142,7 +185,10 @@
 module csgrt_spawn #(
     parameter BITS       = 24,   // coordinate width B (12..32)
     parameter MAX_LIGHTS = 8,    // lights (>= 1)
-    parameter USER_WIDTH = 1     // sideband width (>= 1)
+    parameter USER_WIDTH = 1,    // sideband width (>= 1)
+    parameter SHADOWS    = 1,    // SHADOW children (s_lights_i); 0: s_lights_i must be 0
+    parameter REFLECTION = 1,    // REFLECT children (s_reflect_i); 0: s_reflect_i must be 0
+    parameter REFRACTION = 1     // REFRACT / TIR_REFLECT children (s_refract_i); 0: s_refract_i must be 0
 ) (
     input  wire                                   clk_i,
     input  wire                                   rst_ni,      // synchronous, active low
@@ -192,6 +238,12 @@ module csgrt_spawn #(
     localparam LW   = (ML > 1) ? $clog2(ML) : 1;
     localparam FLW  = ML + 3;         // child flags {reflect, refract, lights, continue}
     localparam UW   = USER_WIDTH;
+    // the child kinds this build has (the others are never requested)
+    localparam SH   = (SHADOWS != 0);
+    localparam RL   = (REFLECTION != 0);
+    localparam RF   = (REFRACTION != 0);
+    localparam RDN  = RL || RF;       // dn and the reflected direction (REFLECT, TIR_REFLECT)
+    localparam [FLW-1:0] FLAG_MASK = {RL ? 1'b1 : 1'b0, RF ? 1'b1 : 1'b0, {ML{SH ? 1'b1 : 1'b0}}, 1'b1};
     localparam SQ   = F + 8;          // geo_sqrt_stages(F)
     localparam UOW  = F + 2;          // csgrt_unit output component
     localparam CTX  = 32;             // queue depth, hits admitted ahead of the sequencer
@@ -213,7 +265,7 @@ module csgrt_spawn #(
     localparam AW   = F + 8;          // rnd(eta cos, F) < 2^(F+7), a
     localparam SKB  = F + 1;          // isqrt(k << F) stages: k << F <= 2^(2F)
     localparam LVW  = B + 1;          // lv = light - p, r
-    localparam XAW  = F + 8;          // X multiplier: n | dn | eta
+    localparam XAW  = RF ? F + 8 : DNW;   // X multiplier: n | dn | eta
     localparam XBW  = B + 1;          //               lv | n | d
     localparam XPW  = XAW + XBW;
     localparam XSW  = XPW + 2;
@@ -221,7 +273,7 @@ module csgrt_spawn #(
     localparam YBW  = NW;             //               n
     localparam YPW  = YAW + YBW;
     localparam TSW  = F + 9;          // t_i = rnd(eta d_i) + rnd(a n_i)
-    localparam VW2  = F + 8;          // child unit input: |v_i| < 128
+    localparam VW2  = RF ? F + 8 : LVW;   // child unit input: |v_i| < 128 (refract), < 2^(F+3) (lv, r)
 
     genvar i;
     integer k, kl;
@@ -267,16 +319,27 @@ module csgrt_spawn #(
         end
     end
 
-    // the hit's d, flags and user wait for the sequencer; d also for FD
+    // the hit's d, flags and user wait for the sequencer; d also for FD.
+    // A kind this build does not have is never requested: its flag is
+    // ignored here (and below), and a simulation stops on it.
     localparam QHW = 3 * B + FLW + UW;
-    wire [FLW-1:0] s_flags = {s_reflect_i, s_refract_i, s_lights_i, s_continue_i};
+    wire [FLW-1:0] s_req   = {s_reflect_i, s_refract_i, s_lights_i, s_continue_i};
+    wire [FLW-1:0] s_flags = s_req & FLAG_MASK;
+`ifndef SYNTHESIS
+    always @(posedge clk_i)
+        if (rst_ni && accept && ((s_req & ~FLAG_MASK) != {FLW{1'b0}})) begin
+            $display("ERROR %m: a hit requests a child kind this build does not have (s_lights_i %b, s_reflect_i %b, s_refract_i %b; SHADOWS %0d, REFLECTION %0d, REFRACTION %0d)",
+                     s_lights_i, s_reflect_i, s_refract_i, SHADOWS, REFLECTION, REFRACTION);
+            $fatal;
+        end
+`endif
     wire [QHW-1:0] qh_data;
     wire           unused_qh_ready, unused_qh_valid;
     csgrt_fifo #(.WIDTH(QHW), .DEPTH(CTX)) u_q_hit (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qh_ready),
         .data_i({s_user_i, s_flags, s_d_i}), .valid_o(unused_qh_valid), .ready_i(seq_load), .data_o(qh_data));
     wire [3*B-1:0] qh_d     = qh_data[0 +: 3*B];
-    wire [FLW-1:0] qh_flags = qh_data[3*B +: FLW];
+    wire [FLW-1:0] qh_flags = qh_data[3*B +: FLW] & FLAG_MASK;
     wire [UW-1:0]  qh_user  = qh_data[3*B+FLW +: UW];
 
     wire [3*B-1:0] qnd_d;
@@ -570,167 +633,200 @@ module csgrt_spawn #(
     // ---- NDA: face the ray (exact sign of n . d) --------------------------------------------
     wire            flip = !nd_acc_q[NDSW-1] && (nd_acc_q != {NDSW{1'b0}});
     reg             nda_valid_q;
-    reg [NDSW-1:0]  nda_ndf_q;   // d . n after the flip
     reg [3*NW-1:0]  nda_n_q;
     always @(posedge clk_i) begin
         if (!rst_ni) nda_valid_q <= 1'b0;
         else nda_valid_q <= nd_done_q;
-        nda_ndf_q <= flip ? {NDSW{1'b0}} - nd_acc_q : nd_acc_q;
         for (k = 0; k < 3; k = k + 1)
             nda_n_q[k*NW +: NW] <= flip ? {NW{1'b0}} - nh2_n_q[k*NW +: NW] : nh2_n_q[k*NW +: NW];
     end
 
-    // ---- NDB: dn = rnd(d . n, F), cos = -dn ----------------------------------------------------
-    wire [NDSW-1:0] ndf_r = nda_ndf_q + {{(NDSW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
-    wire [DNW-1:0]  dn_d  = ndf_r[F +: DNW];   // |d . n| < 1: |dn| <= 2^F
-    wire unused_ndf_r     = ^{ndf_r[F-1:0], ndf_r[NDSW-1:F+DNW]};
+    // ---- NDB: dn = rnd(d . n, F) (REFLECTION or REFRACTION) ----------------------------------
     reg             ndb_valid_q;
-    reg [DNW-1:0]   ndb_dn_q, ndb_cos_q;
     reg [3*NW-1:0]  ndb_n_q;
     always @(posedge clk_i) begin
         if (!rst_ni) ndb_valid_q <= 1'b0;
         else ndb_valid_q <= nda_valid_q;
-        ndb_dn_q  <= dn_d;
-        ndb_cos_q <= {DNW{1'b0}} - dn_d;
-        ndb_n_q   <= nda_n_q;
+        ndb_n_q <= nda_n_q;
     end
-    // the faced normal and dn wait for the sequencer
-    wire [3*NW+DNW-1:0] qn_data;
-    wire                unused_qn_ready, unused_qn_valid;
-    csgrt_fifo #(.WIDTH(3 * NW + DNW), .DEPTH(CTX)) u_q_n (
-        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(ndb_valid_q), .ready_o(unused_qn_ready),
-        .data_i({ndb_dn_q, ndb_n_q}), .valid_o(unused_qn_valid), .ready_i(seq_load), .data_o(qn_data));
-    wire [3*NW-1:0] qn_n  = qn_data[0 +: 3*NW];
-    wire [DNW-1:0]  qn_dn = qn_data[3*NW +: DNW];
+    wire [DNW-1:0]  dn_d;       // into NDB: rnd(d . n, F) after the flip
+    wire [3*NW-1:0] qn_n;       // the faced normal and dn wait for the sequencer
+    wire [DNW-1:0]  qn_dn;
+    wire            qn_valid;
+    generate
+        if (RDN) begin : g_dn
+            reg [NDSW-1:0]  nda_ndf_q;   // d . n after the flip
+            always @(posedge clk_i) nda_ndf_q <= flip ? {NDSW{1'b0}} - nd_acc_q : nd_acc_q;
+            wire [NDSW-1:0] ndf_r = nda_ndf_q + {{(NDSW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            assign dn_d = ndf_r[F +: DNW];   // |d . n| < 1: |dn| <= 2^F
+            wire unused_ndf_r = ^{ndf_r[F-1:0], ndf_r[NDSW-1:F+DNW]};
+            reg  [DNW-1:0]  ndb_dn_q;
+            always @(posedge clk_i) ndb_dn_q <= dn_d;
+            wire [3*NW+DNW-1:0] qn_data;
+            wire                unused_qn_ready;
+            csgrt_fifo #(.WIDTH(3 * NW + DNW), .DEPTH(CTX)) u_q_n (
+                .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(ndb_valid_q), .ready_o(unused_qn_ready),
+                .data_i({ndb_dn_q, ndb_n_q}), .valid_o(qn_valid), .ready_i(seq_load), .data_o(qn_data));
+            assign qn_n  = qn_data[0 +: 3*NW];
+            assign qn_dn = qn_data[3*NW +: DNW];
+        end else begin : g_no_dn
+            // shadows only: the normal alone
+            assign dn_d = {DNW{1'b0}};
+            wire unused_dn = ^dn_d;
+            wire unused_qn_ready;
+            csgrt_fifo #(.WIDTH(3 * NW), .DEPTH(CTX)) u_q_n (
+                .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(ndb_valid_q), .ready_o(unused_qn_ready),
+                .data_i(ndb_n_q), .valid_o(qn_valid), .ready_i(seq_load), .data_o(qn_n));
+            assign qn_dn = {DNW{1'b0}};
+        end
+    endgenerate
 
-    // ---- eta = div(ior_from << F, ior_to, F+7), eta2 = rnd(eta^2, F) --------------------------
-    wire           eta_valid, eta_ovf;
-    wire [EMW-1:0] eta_mag;
-    wire           unused_eta_neg, unused_eta_user;
-    csgrt_div_core #(.NUM_WIDTH(17 + F), .DEN_WIDTH(17), .QUOT_BITS(EMW), .USER_WIDTH(1)) u_div_eta (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(accept),
-        .num_i({1'b0, s_ior_from_i, {F{1'b0}}}), .den_i({1'b0, s_ior_to_i}), .user_i(1'b0),
-        .valid_o(eta_valid), .quot_o(eta_mag), .neg_o(unused_eta_neg), .ovf_o(eta_ovf),
-        .user_o(unused_eta_user));
-    // the model leaves eta at 0 when the quotient overflows (ior_to = 0)
-    wire [EMW-1:0] eta = eta_ovf ? {EMW{1'b0}} : eta_mag;
-    wire [2*ETW-1:0] e2p;
-    wire             unused_e2_v;
-    csgrt_mul #(.A_WIDTH(ETW), .B_WIDTH(ETW)) u_mul_e2 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(eta_valid),
-        .a_i({1'b0, eta}), .b_i({1'b0, eta}), .valid_o(unused_e2_v), .p_o(e2p));
-    wire           e2_valid;
-    wire [EMW-1:0] e2_eta;
-    csgrt_delay #(.WIDTH(EMW), .STAGES(2)) u_dly_e2 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(eta_valid),
-        .data_i(eta), .valid_o(e2_valid), .data_o(e2_eta));
-    wire [2*ETW-1:0] e2r  = e2p + {{(2*ETW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
-    wire [E2W-1:0]   eta2 = e2r[F +: E2W];
-    wire unused_e2r       = ^{e2r[F-1:0], e2r[2*ETW-1:F+E2W]};
-    // {eta2, eta} for S1; eta for the sequencer
-    wire [E2W+EMW-1:0] qe_data;
-    wire               qe_pop;
-    wire               unused_qe_ready, unused_qe_valid;
-    csgrt_fifo #(.WIDTH(E2W + EMW), .DEPTH(CTX)) u_q_e (
-        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(e2_valid), .ready_o(unused_qe_ready),
-        .data_i({eta2, e2_eta}), .valid_o(unused_qe_valid), .ready_i(qe_pop), .data_o(qe_data));
-    wire [EMW-1:0] qe_eta  = qe_data[0 +: EMW];
-    wire [E2W-1:0] qe_eta2 = qe_data[EMW +: E2W];
+    // ---- refraction (REFRACTION): eta, eta2, S1..S6 ------------------------------------------
+    // Without it none of this exists: eta, a and TIR are 0 and the
+    // sequencer waits for the normal's queue instead of the last one here.
+    wire           front_valid;   // the front's last queue holds the next hit
     wire [EMW-1:0] qeta_eta;
-    wire           unused_qeta_ready, unused_qeta_valid;
-    csgrt_fifo #(.WIDTH(EMW), .DEPTH(CTX)) u_q_eta (
-        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(e2_valid), .ready_o(unused_qeta_ready),
-        .data_i(e2_eta), .valid_o(unused_qeta_valid), .ready_i(seq_load), .data_o(qeta_eta));
+    wire [AW-1:0]  qf_a;
+    wire           qf_tir;
+    generate
+        if (RF) begin : g_refr
+            // ---- eta = div(ior_from << F, ior_to, F+7), eta2 = rnd(eta^2, F) ------------------
+            wire           eta_valid, eta_ovf;
+            wire [EMW-1:0] eta_mag;
+            wire           unused_eta_neg, unused_eta_user;
+            csgrt_div_core #(.NUM_WIDTH(17 + F), .DEN_WIDTH(17), .QUOT_BITS(EMW), .USER_WIDTH(1)) u_div_eta (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(accept),
+                .num_i({1'b0, s_ior_from_i, {F{1'b0}}}), .den_i({1'b0, s_ior_to_i}), .user_i(1'b0),
+                .valid_o(eta_valid), .quot_o(eta_mag), .neg_o(unused_eta_neg), .ovf_o(eta_ovf),
+                .user_o(unused_eta_user));
+            // the model leaves eta at 0 when the quotient overflows (ior_to = 0)
+            wire [EMW-1:0] eta = eta_ovf ? {EMW{1'b0}} : eta_mag;
+            wire [2*ETW-1:0] e2p;
+            wire             unused_e2_v;
+            csgrt_mul #(.A_WIDTH(ETW), .B_WIDTH(ETW)) u_mul_e2 (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(eta_valid),
+                .a_i({1'b0, eta}), .b_i({1'b0, eta}), .valid_o(unused_e2_v), .p_o(e2p));
+            wire           e2_valid;
+            wire [EMW-1:0] e2_eta;
+            csgrt_delay #(.WIDTH(EMW), .STAGES(2)) u_dly_e2 (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(eta_valid),
+                .data_i(eta), .valid_o(e2_valid), .data_o(e2_eta));
+            wire [2*ETW-1:0] e2r  = e2p + {{(2*ETW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            wire [E2W-1:0]   eta2 = e2r[F +: E2W];
+            wire unused_e2r       = ^{e2r[F-1:0], e2r[2*ETW-1:F+E2W]};
+            // {eta2, eta} for S1; eta for the sequencer
+            wire [E2W+EMW-1:0] qe_data;
+            wire               unused_qe_ready, unused_qe_valid;
+            csgrt_fifo #(.WIDTH(E2W + EMW), .DEPTH(CTX)) u_q_e (
+                .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(e2_valid), .ready_o(unused_qe_ready),
+                .data_i({eta2, e2_eta}), .valid_o(unused_qe_valid), .ready_i(ndb_valid_q), .data_o(qe_data));
+            wire [EMW-1:0] qe_eta  = qe_data[0 +: EMW];
+            wire [E2W-1:0] qe_eta2 = qe_data[EMW +: E2W];
+            wire           unused_qeta_ready, unused_qeta_valid;
+            csgrt_fifo #(.WIDTH(EMW), .DEPTH(CTX)) u_q_eta (
+                .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(e2_valid), .ready_o(unused_qeta_ready),
+                .data_i(e2_eta), .valid_o(unused_qeta_valid), .ready_i(seq_load), .data_o(qeta_eta));
 
-    // ---- S1: cos^2, eta cos ------------------------------------------------------------------
-    assign qe_pop = ndb_valid_q;
-    localparam C2PW = 2 * DNW;
-    localparam ECPW = ETW + DNW;
-    wire [C2PW-1:0] c2p;
-    wire [ECPW-1:0] ecp;
-    wire            unused_c2_v, unused_ec_v;
-    csgrt_mul #(.A_WIDTH(DNW), .B_WIDTH(DNW)) u_mul_c2 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
-        .a_i(ndb_cos_q), .b_i(ndb_cos_q), .valid_o(unused_c2_v), .p_o(c2p));
-    csgrt_mul #(.A_WIDTH(ETW), .B_WIDTH(DNW)) u_mul_ec (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
-        .a_i({1'b0, qe_eta}), .b_i(ndb_cos_q), .valid_o(unused_ec_v), .p_o(ecp));
-    wire           s1_valid;
-    wire [E2W-1:0] s1_eta2;
-    csgrt_delay #(.WIDTH(E2W), .STAGES(2)) u_dly_s1 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
-        .data_i(qe_eta2), .valid_o(s1_valid), .data_o(s1_eta2));
+            // ---- NDB': cos = -dn -------------------------------------------------------------
+            reg [DNW-1:0] ndb_cos_q;
+            always @(posedge clk_i) ndb_cos_q <= {DNW{1'b0}} - dn_d;
 
-    // ---- S2: sin2 = 1 - rnd(cos^2, F); rnd(eta cos, F) -------------------------------------
-    wire [C2PW-1:0] c2r  = c2p + {{(C2PW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
-    wire [DNW-1:0]  sin2 = {{(DNW-F-1){1'b0}}, 1'b1, {F{1'b0}}} - c2r[F +: DNW];   // in [0, 2^F]
-    wire [ECPW-1:0] ecr  = ecp + {{(ECPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
-    wire [AW-1:0]   ec   = ecr[F +: AW];
-    wire unused_s2       = ^{c2r[F-1:0], c2r[C2PW-1:F+DNW], ecr[F-1:0], ecr[ECPW-1:F+AW]};
-    reg             s2_valid_q;
-    reg [DNW-1:0]   s2_sin2_q;
-    reg [E2W-1:0]   s2_eta2_q;
-    always @(posedge clk_i) begin
-        if (!rst_ni) s2_valid_q <= 1'b0;
-        else s2_valid_q <= s1_valid;
-        s2_sin2_q <= sin2;
-        s2_eta2_q <= s1_eta2;
-    end
-    // rnd(eta cos, F) waits for sk
-    wire [AW-1:0] qec_ec;
-    wire          qec_pop;
-    wire          unused_qec_ready, unused_qec_valid;
-    csgrt_fifo #(.WIDTH(AW), .DEPTH(CTX)) u_q_ec (
-        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(s1_valid), .ready_o(unused_qec_ready),
-        .data_i(ec), .valid_o(unused_qec_valid), .ready_i(qec_pop), .data_o(qec_ec));
+            // ---- S1: cos^2, eta cos ------------------------------------------------------------
+            localparam C2PW = 2 * DNW;
+            localparam ECPW = ETW + DNW;
+            wire [C2PW-1:0] c2p;
+            wire [ECPW-1:0] ecp;
+            wire            unused_c2_v, unused_ec_v;
+            csgrt_mul #(.A_WIDTH(DNW), .B_WIDTH(DNW)) u_mul_c2 (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
+                .a_i(ndb_cos_q), .b_i(ndb_cos_q), .valid_o(unused_c2_v), .p_o(c2p));
+            csgrt_mul #(.A_WIDTH(ETW), .B_WIDTH(DNW)) u_mul_ec (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
+                .a_i({1'b0, qe_eta}), .b_i(ndb_cos_q), .valid_o(unused_ec_v), .p_o(ecp));
+            wire           s1_valid;
+            wire [E2W-1:0] s1_eta2;
+            csgrt_delay #(.WIDTH(E2W), .STAGES(2)) u_dly_s1 (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(ndb_valid_q),
+                .data_i(qe_eta2), .valid_o(s1_valid), .data_o(s1_eta2));
 
-    // ---- S3: rnd(eta^2, F) sin2 -----------------------------------------------------------
-    localparam KPW = E2W + DNW;
-    wire [KPW-1:0] kp;
-    wire           unused_k_v;
-    csgrt_mul #(.A_WIDTH(E2W), .B_WIDTH(DNW)) u_mul_k (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s2_valid_q),
-        .a_i(s2_eta2_q), .b_i(s2_sin2_q), .valid_o(unused_k_v), .p_o(kp));
-    wire s3_valid;
-    wire unused_s3_data;
-    csgrt_delay #(.WIDTH(1), .STAGES(2)) u_dly_s3 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s2_valid_q),
-        .data_i(1'b0), .valid_o(s3_valid), .data_o(unused_s3_data));
+            // ---- S2: sin2 = 1 - rnd(cos^2, F); rnd(eta cos, F) -------------------------------
+            wire [C2PW-1:0] c2r  = c2p + {{(C2PW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            wire [DNW-1:0]  sin2 = {{(DNW-F-1){1'b0}}, 1'b1, {F{1'b0}}} - c2r[F +: DNW];   // in [0, 2^F]
+            wire [ECPW-1:0] ecr  = ecp + {{(ECPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            wire [AW-1:0]   ec   = ecr[F +: AW];
+            wire unused_s2       = ^{c2r[F-1:0], c2r[C2PW-1:F+DNW], ecr[F-1:0], ecr[ECPW-1:F+AW]};
+            reg             s2_valid_q;
+            reg [DNW-1:0]   s2_sin2_q;
+            reg [E2W-1:0]   s2_eta2_q;
+            always @(posedge clk_i) begin
+                if (!rst_ni) s2_valid_q <= 1'b0;
+                else s2_valid_q <= s1_valid;
+                s2_sin2_q <= sin2;
+                s2_eta2_q <= s1_eta2;
+            end
+            // rnd(eta cos, F) waits for sk
+            wire [AW-1:0] qec_ec;
+            wire          qec_pop;
+            wire          unused_qec_ready, unused_qec_valid;
+            csgrt_fifo #(.WIDTH(AW), .DEPTH(CTX)) u_q_ec (
+                .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(s1_valid), .ready_o(unused_qec_ready),
+                .data_i(ec), .valid_o(unused_qec_valid), .ready_i(qec_pop), .data_o(qec_ec));
 
-    // ---- S4: k = 1 - rnd(., F); TIR when k < 0; the radicand k << F ------------------------
-    wire [KPW-1:0] kr  = kp + {{(KPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
-    wire [KW-1:0]  kk  = {{(KW-F-1){1'b0}}, 1'b1, {F{1'b0}}} - kr[F +: KW];
-    wire unused_kr     = ^{kr[F-1:0], kr[KPW-1:F+KW]};
-    wire           tir = kk[KW-1];
-    reg            s4_valid_q, s4_tir_q;
-    reg [2*SKB-1:0] s4_rad_q;
-    always @(posedge clk_i) begin
-        if (!rst_ni) s4_valid_q <= 1'b0;
-        else s4_valid_q <= s3_valid;
-        s4_tir_q <= tir;
-        // k >= 0 means k <= 2^F: k << F < 4^(F+1)
-        s4_rad_q <= tir ? {(2*SKB){1'b0}} : {1'b0, kk[F:0], {F{1'b0}}};
-    end
-    wire unused_kk = ^kk[KW-2:F+1];
+            // ---- S3: rnd(eta^2, F) sin2 -------------------------------------------------------
+            localparam KPW = E2W + DNW;
+            wire [KPW-1:0] kp;
+            wire           unused_k_v;
+            csgrt_mul #(.A_WIDTH(E2W), .B_WIDTH(DNW)) u_mul_k (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s2_valid_q),
+                .a_i(s2_eta2_q), .b_i(s2_sin2_q), .valid_o(unused_k_v), .p_o(kp));
+            wire s3_valid;
+            wire unused_s3_data;
+            csgrt_delay #(.WIDTH(1), .STAGES(2)) u_dly_s3 (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s2_valid_q),
+                .data_i(1'b0), .valid_o(s3_valid), .data_o(unused_s3_data));
 
-    // ---- S5: sk = isqrt(k << F) ---------------------------------------------------------------
-    wire           s5_valid, s5_tir;
-    wire [SKB-1:0] s5_sk;
-    csgrt_sqrt_core #(.RESULT_BITS(SKB), .USER_WIDTH(1)) u_sqrt_k (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s4_valid_q),
-        .n_i(s4_rad_q), .user_i(s4_tir_q), .valid_o(s5_valid), .root_o(s5_sk), .user_o(s5_tir));
+            // ---- S4: k = 1 - rnd(., F); TIR when k < 0; the radicand k << F --------------------
+            wire [KPW-1:0] kr  = kp + {{(KPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            wire [KW-1:0]  kk  = {{(KW-F-1){1'b0}}, 1'b1, {F{1'b0}}} - kr[F +: KW];
+            wire unused_kr     = ^{kr[F-1:0], kr[KPW-1:F+KW]};
+            wire           tir = kk[KW-1];
+            reg            s4_valid_q, s4_tir_q;
+            reg [2*SKB-1:0] s4_rad_q;
+            always @(posedge clk_i) begin
+                if (!rst_ni) s4_valid_q <= 1'b0;
+                else s4_valid_q <= s3_valid;
+                s4_tir_q <= tir;
+                // k >= 0 means k <= 2^F: k << F < 4^(F+1)
+                s4_rad_q <= tir ? {(2*SKB){1'b0}} : {1'b0, kk[F:0], {F{1'b0}}};
+            end
+            wire unused_kk = ^kk[KW-2:F+1];
 
-    // ---- S6: a = rnd(eta cos, F) - sk ----------------------------------------------------------
-    assign qec_pop = s5_valid;
-    wire [AW-1:0]  a_d = qec_ec - {{(AW-SKB){1'b0}}, s5_sk};
-    wire [AW:0]    qf_data;
-    wire           qf_valid;
-    wire           unused_qf_ready;
-    csgrt_fifo #(.WIDTH(AW + 1), .DEPTH(CTX)) u_q_fin (
-        .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(s5_valid), .ready_o(unused_qf_ready),
-        .data_i({s5_tir, a_d}), .valid_o(qf_valid), .ready_i(seq_load), .data_o(qf_data));
-    wire [AW-1:0] qf_a   = qf_data[0 +: AW];
-    wire          qf_tir = qf_data[AW];
+            // ---- S5: sk = isqrt(k << F) -----------------------------------------------------------
+            wire           s5_valid, s5_tir;
+            wire [SKB-1:0] s5_sk;
+            csgrt_sqrt_core #(.RESULT_BITS(SKB), .USER_WIDTH(1)) u_sqrt_k (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s4_valid_q),
+                .n_i(s4_rad_q), .user_i(s4_tir_q), .valid_o(s5_valid), .root_o(s5_sk), .user_o(s5_tir));
+
+            // ---- S6: a = rnd(eta cos, F) - sk ------------------------------------------------------
+            assign qec_pop = s5_valid;
+            wire [AW-1:0]  a_d = qec_ec - {{(AW-SKB){1'b0}}, s5_sk};
+            wire [AW:0]    qf_data;
+            wire           unused_qf_ready;
+            csgrt_fifo #(.WIDTH(AW + 1), .DEPTH(CTX)) u_q_fin (
+                .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(s5_valid), .ready_o(unused_qf_ready),
+                .data_i({s5_tir, a_d}), .valid_o(front_valid), .ready_i(seq_load), .data_o(qf_data));
+            assign qf_a   = qf_data[0 +: AW];
+            assign qf_tir = qf_data[AW];
+            wire unused_qn_valid = qn_valid;
+        end else begin : g_no_refr
+            assign front_valid = qn_valid;
+            assign qeta_eta    = {EMW{1'b0}};
+            assign qf_a        = {AW{1'b0}};
+            assign qf_tir      = 1'b0;
+            wire unused_ior = ^{s_ior_from_i, s_ior_to_i};
+        end
+    endgenerate
 
     // =========================================================================
     // Children
@@ -747,23 +843,24 @@ module csgrt_spawn #(
     reg [AW-1:0]    cur_a_q;
     reg             cur_tir_q;
 
+    wire [FLW-1:0]  pend  = cur_pend_q & FLAG_MASK;   // the kinds this build has
     wire            issue = en_c && cur_valid_q;
-    wire [FLW-1:0]  pick  = cur_pend_q & (~cur_pend_q + {{(FLW-1){1'b0}}, 1'b1});   // lowest pending
-    wire [FLW-1:0]  rest  = cur_pend_q & ~pick;
+    wire [FLW-1:0]  pick  = pend & (~pend + {{(FLW-1){1'b0}}, 1'b1});   // lowest pending
+    wire [FLW-1:0]  rest  = pend & ~pick;
     wire            last  = (rest == {FLW{1'b0}});
     wire            free  = !cur_valid_q || (issue && last);
     wire            qo_ready;
-    assign seq_load = free && qf_valid && qo_ready;
+    assign seq_load = free && front_valid && qo_ready;
     wire            qo_push = seq_load && (qh_flags != {FLW{1'b0}});
 
     reg [2:0]      kind;
     reg [LW-1:0]   light;
     reg [3*B-1:0]  lpos;
     always @* begin
-        if (pick[0])             kind = KIND_CONTINUE;
-        else if (pick[ML+1])     kind = cur_tir_q ? KIND_TIR_REFLECT : KIND_REFRACT;
-        else if (pick[ML+2])     kind = KIND_REFLECT;
-        else                     kind = KIND_SHADOW;
+        if (pick[0])                 kind = KIND_CONTINUE;
+        else if (RF && pick[ML+1])   kind = cur_tir_q ? KIND_TIR_REFLECT : KIND_REFRACT;
+        else if (RL && pick[ML+2])   kind = KIND_REFLECT;
+        else                         kind = KIND_SHADOW;
         light = {LW{1'b0}};
         lpos  = {(3*B){1'b0}};
         for (kl = 0; kl < ML; kl = kl + 1)
@@ -772,12 +869,20 @@ module csgrt_spawn #(
                 lpos  = lpos | light_pos_i[kl*3*B +: 3*B];
             end
     end
+    // lv = light_k - p (SHADOWS)
     wire [3*LVW-1:0] lv;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_lv
-            wire [B-1:0] lp = lpos[i*B +: B];
-            wire [B-1:0] pp = cur_p_q[i*B +: B];
-            assign lv[i*LVW +: LVW] = {lp[B-1], lp} - {pp[B-1], pp};
+            if (SH) begin : g_sh
+                wire [B-1:0] lp = lpos[i*B +: B];
+                wire [B-1:0] pp = cur_p_q[i*B +: B];
+                assign lv[i*LVW +: LVW] = {lp[B-1], lp} - {pp[B-1], pp};
+            end else begin : g_no_sh
+                assign lv[i*LVW +: LVW] = {LVW{1'b0}};
+            end
+        end
+        if (!SH) begin : g_no_lights
+            wire unused_lights = ^{lpos, light_pos_i, cur_p_q};
         end
     endgenerate
 
@@ -826,40 +931,56 @@ module csgrt_spawn #(
     end
 
     // ---- X/Y: the child's products ----------------------------------------------------------
+    // X: SHADOW n_i lv_i; REFLECT, TIR_REFLECT dn n_i; REFRACT eta d_i.
+    // Y (REFRACTION): a n_i.
     wire [3*XPW-1:0] xp;
     wire [3*YPW-1:0] yp;
     wire [3*LVW-1:0] base;   // SHADOW: lv; else d
+    wire [XAW-1:0]   xa_eta; // REFRACT's X factor
     generate
+        if (RF) begin : g_xa_eta
+            assign xa_eta = {1'b0, c0_eta_q};
+        end else begin : g_no_xa_eta
+            assign xa_eta = {XAW{1'b0}};
+            wire unused_eta_a = ^{c0_eta_q, c0_a_q};
+        end
         for (i = 0; i < 3; i = i + 1) begin : g_xy
-            wire [NW-1:0]  n  = c0_n_q[i*NW +: NW];
-            wire [B-1:0]   d  = c0_d_q[i*B +: B];
-            wire [LVW-1:0] l  = c0_lv_q[i*LVW +: LVW];
+            wire [NW-1:0]  n    = c0_n_q[i*NW +: NW];
+            wire [B-1:0]   d    = c0_d_q[i*B +: B];
+            wire [LVW-1:0] l    = c0_lv_q[i*LVW +: LVW];
+            // sign-extended (XAW >= DNW = NW + 1, XBW = B + 1 > NW)
+            wire [XAW-1:0] n_a  = {{(XAW-NW){n[NW-1]}}, n};
+            wire [XAW-1:0] dn_a = {{(XAW-DNW+1){c0_dn_q[DNW-1]}}, c0_dn_q[DNW-2:0]};
+            wire [XBW-1:0] n_b  = {{(XBW-NW){n[NW-1]}}, n};
+            wire [XBW-1:0] d_b  = {d[B-1], d};
             reg  [XAW-1:0] xa;
             reg  [XBW-1:0] xb;
             always @* begin
-                case (c0_kind_q)
-                    KIND_SHADOW: begin
-                        xa = {{(XAW-NW){n[NW-1]}}, n};
-                        xb = l;
-                    end
-                    KIND_REFRACT: begin
-                        xa = {1'b0, c0_eta_q};
-                        xb = {d[B-1], d};
-                    end
-                    default: begin   // REFLECT, TIR_REFLECT (CONTINUE: unused)
-                        xa = {{(XAW-DNW){c0_dn_q[DNW-1]}}, c0_dn_q};
-                        xb = {{(XBW-NW){n[NW-1]}}, n};
-                    end
-                endcase
+                if (SH && c0_kind_q == KIND_SHADOW) begin
+                    xa = n_a;
+                    xb = l;
+                end else if (RF && c0_kind_q == KIND_REFRACT) begin
+                    xa = xa_eta;
+                    xb = d_b;
+                end else begin   // REFLECT, TIR_REFLECT (CONTINUE: unused)
+                    xa = dn_a;
+                    xb = n_b;
+                end
             end
-            wire unused_xv, unused_yv;
+            wire unused_xv;
             csgrt_mul #(.A_WIDTH(XAW), .B_WIDTH(XBW)) u_mul_x (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
                 .a_i(xa), .b_i(xb), .valid_o(unused_xv), .p_o(xp[i*XPW +: XPW]));
-            csgrt_mul #(.A_WIDTH(YAW), .B_WIDTH(YBW)) u_mul_y (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
-                .a_i(c0_a_q), .b_i(n), .valid_o(unused_yv), .p_o(yp[i*YPW +: YPW]));
-            assign base[i*LVW +: LVW] = (c0_kind_q == KIND_SHADOW) ? l : {d[B-1], d};
+            if (RF) begin : g_y
+                wire unused_yv;
+                csgrt_mul #(.A_WIDTH(YAW), .B_WIDTH(YBW)) u_mul_y (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
+                    .a_i(c0_a_q), .b_i(n), .valid_o(unused_yv), .p_o(yp[i*YPW +: YPW]));
+            end else begin : g_no_y
+                assign yp[i*YPW +: YPW] = {YPW{1'b0}};
+            end
+            // SHADOW: lv; REFLECT, TIR_REFLECT: d (only lv without them; only d without shadows)
+            assign base[i*LVW +: LVW] = (SH && (!RDN || c0_kind_q == KIND_SHADOW)) ? l : d_b;
         end
     endgenerate
     localparam XSDW = 3 * LVW + 3 + LW + 1;
@@ -874,31 +995,54 @@ module csgrt_spawn #(
     wire             x_last  = x_side[3*LVW+3+LW];
 
     // ---- C3: lit, r, t: the unit's input ----------------------------------------------------
-    wire [XSW-1:0] xs = {{2{xp[XPW-1]}}, xp[0 +: XPW]} + {{2{xp[2*XPW-1]}}, xp[XPW +: XPW]}
-                      + {{2{xp[3*XPW-1]}}, xp[2*XPW +: XPW]};
-    wire           lit = !xs[XSW-1] && (xs != {XSW{1'b0}});   // n . lv > 0
+    wire             lit;    // n . lv > 0 (SHADOWS)
+    generate
+        if (SH) begin : g_lit
+            wire [XSW-1:0] xs = {{2{xp[XPW-1]}}, xp[0 +: XPW]} + {{2{xp[2*XPW-1]}}, xp[XPW +: XPW]}
+                              + {{2{xp[3*XPW-1]}}, xp[2*XPW +: XPW]};
+            assign lit = !xs[XSW-1] && (xs != {XSW{1'b0}});
+        end else begin : g_no_lit
+            assign lit = 1'b0;
+        end
+    endgenerate
     wire [3*VW2-1:0] v_d;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_c3
             wire [XPW-1:0] x  = xp[i*XPW +: XPW];
             wire [YPW-1:0] y  = yp[i*YPW +: YPW];
             wire [LVW-1:0] bs = x_base[i*LVW +: LVW];
-            // reflect: d - rnd(2 dn n_i, F) = d - rnd(dn n_i, F-1)
-            wire [XPW-1:0] x1r  = x + {{(XPW-F+1){1'b0}}, 1'b1, {(F-2){1'b0}}};
-            wire [LVW-1:0] refl = bs - x1r[F-1 +: LVW];
-            // refract: rnd(eta d_i, F) + rnd(a n_i, F)
-            wire [XPW-1:0] xr   = x + {{(XPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
-            wire [YPW-1:0] yr   = y + {{(YPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
-            wire [TSW-1:0] refr = xr[F +: TSW] + yr[F +: TSW];
-            wire unused_c3 = ^{x1r[F-2:0], x1r[XPW-1:F-1+LVW], xr[F-1:0], xr[XPW-1:F+TSW],
-                               yr[F-1:0], refr[TSW-1]};
+            // reflect: d - rnd(2 dn n_i, F) = d - rnd(dn n_i, F-1) (REFLECTION or REFRACTION)
+            wire [LVW-1:0] refl;
+            if (RDN) begin : g_refl
+                wire [XPW-1:0] x1r = x + {{(XPW-F+1){1'b0}}, 1'b1, {(F-2){1'b0}}};
+                assign refl = bs - x1r[F-1 +: LVW];
+                wire unused_refl = ^{x1r[F-2:0], x1r[XPW-1:F-1+LVW]};
+            end else begin : g_no_refl
+                assign refl = {LVW{1'b0}};
+                wire unused_x = ^x;   // shadows only: the sum of X is the lit test
+            end
+            // refract: rnd(eta d_i, F) + rnd(a n_i, F) (REFRACTION)
+            wire [VW2-1:0] refr;
+            if (RF) begin : g_refr_t
+                wire [XPW-1:0] xr = x + {{(XPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+                wire [YPW-1:0] yr = y + {{(YPW-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+                wire [TSW-1:0] t  = xr[F +: TSW] + yr[F +: TSW];
+                assign refr = t[VW2-1:0];   // |t_i| < 128 (unit_fx's bound)
+                wire unused_refr = ^{xr[F-1:0], xr[XPW-1:F+TSW], yr[F-1:0], t[TSW-1]};
+            end else begin : g_no_refr_t
+                assign refr = {VW2{1'b0}};
+                wire unused_y = ^y;
+            end
+            // sign-extended (VW2 >= LVW)
+            wire [VW2-1:0] bs_v   = {{(VW2-LVW+1){bs[LVW-1]}}, bs[LVW-2:0]};
+            wire [VW2-1:0] refl_v = {{(VW2-LVW+1){refl[LVW-1]}}, refl[LVW-2:0]};
             reg [VW2-1:0] v;
             always @* begin
                 case (x_kind)
-                    KIND_SHADOW:      v = {{(VW2-LVW){bs[LVW-1]}}, bs};
-                    KIND_REFRACT:     v = refr[VW2-1:0];   // |t_i| < 128 (unit_fx's bound)
+                    KIND_SHADOW:      v = bs_v;
+                    KIND_REFRACT:     v = refr;
                     KIND_CONTINUE:    v = {VW2{1'b0}};
-                    default:          v = {{(VW2-LVW){refl[LVW-1]}}, refl};
+                    default:          v = refl_v;
                 endcase
             end
             assign v_d[i*VW2 +: VW2] = v;

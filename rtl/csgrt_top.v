@@ -502,7 +502,8 @@ module csgrt_top #(
                 .pix_rgb_o (pix_rgb_o)
             );
 
-            csgrt_spawn #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .USER_WIDTH(CB)) u_spawn (
+            csgrt_spawn #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .USER_WIDTH(CB), .SHADOWS(SHADOWS),
+                          .REFLECTION(REFLECTION), .REFRACTION(REFRACTION)) u_spawn (
                 .clk_i, .rst_ni, .light_pos_i (light_pos),
                 .s_valid_i (sp_valid), .s_ready_o (sp_ready), .s_o_i (sp_o), .s_d_i (sp_d), .s_t_i (sp_t),
                 .s_coef_i (sp_coef), .s_ior_from_i (sp_ior_from), .s_ior_to_i (sp_ior_to), .s_lights_i (sp_lights),

@@ -62,8 +62,11 @@ tb: $(TB_BINS)
 LINT_MODULES := $(basename $(notdir $(TB_RTL)))
 LINT_TOP_BITS := 12 16 24 32
 # Lint every module at its default parameters and csgrt_top at each width
-# and with two lanes; then synthesise csgrt_top (which contains every block)
-# with yosys and assert a clean netlist without latches.
+# and with two lanes; csgrt_spawn also at each width without each of its
+# effect units (its generate branches); then synthesise csgrt_top (which
+# contains every block) with yosys and assert a clean netlist without latches.
+LINT_SPAWN_FX := "-GREFRACTION=0" "-GREFLECTION=0 -GREFRACTION=0" "-GREFLECTION=0" "-GSHADOWS=0" \
+                 "-GSHADOWS=0 -GREFRACTION=0"
 lint-rtl:
 	@set -e; for m in $(LINT_MODULES); do \
 	    echo "verilator lint $$m"; \
@@ -79,6 +82,16 @@ lint-rtl:
 	    echo "verilator lint csgrt_top BITS=$$b $$fx"; \
 	    $(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GBITS=$$b $$fx rtl/csgrt_top.v; \
 	done; done; \
+	for fx in $(LINT_SPAWN_FX); do for b in $(LINT_TOP_BITS); do \
+	    echo "verilator lint csgrt_spawn BITS=$$b $$fx"; \
+	    $(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_spawn -GBITS=$$b $$fx rtl/csgrt_spawn.v; \
+	done; done; \
+	for fx in "REFRACTION 0" "REFLECTION 0 -set REFRACTION 0"; do \
+	    echo "yosys proc csgrt_spawn $$fx (no latches)"; \
+	    $(YOSYS) -q -l $(BUILD)/yosys_lint_spawn.log -p "read_verilog $(TB_RTL); chparam -set $$fx csgrt_spawn; \
+	        hierarchy -top csgrt_spawn; proc; check -assert; \
+	        select -assert-none t:\$$dlatch t:\$$adlatch" > /dev/null; \
+	done; \
 	echo "yosys proc csgrt_top SHADOWS=1 REFLECTION=1 (the ray tree: no latches)"; \
 	$(YOSYS) -q -l $(BUILD)/yosys_lint_fx.log -p "read_verilog $(TB_RTL); chparam -set SHADOWS 1 -set REFLECTION 1 -set REFRACTION 1 csgrt_top; \
 	    hierarchy -top csgrt_top; proc; check -assert; \

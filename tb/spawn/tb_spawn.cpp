@@ -17,6 +17,8 @@
 // bursts that fill the front's queues). The bench asserts that it saw
 // total internal reflection, unlit lights (m_lit_o = 0) and hits out of
 // range. A back-to-back run measures the latency and the clocks per child.
+// The same at BITS 16 for the builds without refraction (REFRACTION 0) and
+// with shadows only (REFLECTION 0 too), fed only the kinds they have.
 #include "Vtb_spawn.h"
 #include "compile.h"
 #include "parse.h"
@@ -33,6 +35,8 @@
 #include <string>
 #include <type_traits>
 #include <vector>
+
+#include <unistd.h>
 
 namespace {
 
@@ -89,56 +93,62 @@ struct Out {
     uint32_t user;
 };
 
-template <int NB>
+// Dut<ID>: the instance ID; 12, 16, 24, 32 have every child kind (BITS = ID),
+// kB16Refl is BITS 16 without refraction, kB16Shadow BITS 16 with shadows only.
+constexpr int kB16Refl = 1016, kB16Shadow = 2016;
+template <int ID>
 struct Dut;
-#define SPAWN_DUT(NB)                                                                              \
+#define SPAWN_DUT(ID, TAG, NB)                                                                     \
     template <>                                                                                    \
-    struct Dut<NB> {                                                                               \
+    struct Dut<ID> {                                                                               \
+        static constexpr int kBits = NB;                                                           \
         static tb::StreamPorts ports(Top* t) {                                                     \
-            return {&t->b##NB##_clk_i, &t->b##NB##_rst_ni, &t->b##NB##_valid_i,                    \
-                    &t->b##NB##_ready_o, &t->b##NB##_valid_o, &t->b##NB##_ready_i};                \
+            return {&t->TAG##_clk_i, &t->TAG##_rst_ni, &t->TAG##_valid_i,                    \
+                    &t->TAG##_ready_o, &t->TAG##_valid_o, &t->TAG##_ready_i};                \
         }                                                                                          \
         static void lights(Top* t, const std::vector<V3>& l) {                                     \
             for (int k = 0; k < kLights; ++k)                                                      \
                 for (int i = 0; i < 3; ++i)                                                        \
-                    set_field(t->b##NB##_light_pos_i, (3 * k + i) * NB, NB,                        \
+                    set_field(t->TAG##_light_pos_i, (3 * k + i) * NB, NB,                        \
                               k < int(l.size()) ? l[k][i] : 0);                                    \
         }                                                                                          \
         static void drive(Top* t, const Request& q, uint32_t user) {                               \
             for (int i = 0; i < 3; ++i) {                                                          \
-                set_field(t->b##NB##_o_i, i * NB, NB, q.ray.o[i]);                                 \
-                set_field(t->b##NB##_d_i, i * NB, NB, q.ray.d[i]);                                 \
+                set_field(t->TAG##_o_i, i * NB, NB, q.ray.o[i]);                                 \
+                set_field(t->TAG##_d_i, i * NB, NB, q.ray.d[i]);                                 \
             }                                                                                      \
-            set_field(t->b##NB##_t_i, 0, NB - 1, q.t);                                             \
-            for (int c = 0; c < csgrt::kNumCoefs; ++c) set_field(t->b##NB##_coef_i, c * NB, NB, q.coef[c]); \
-            t->b##NB##_ior_from_i = uint16_t(q.ior_from);                                          \
-            t->b##NB##_ior_to_i = uint16_t(q.ior_to);                                              \
-            t->b##NB##_lights_i = uint8_t(q.lights);                                               \
-            t->b##NB##_reflect_i = q.reflect;                                                      \
-            t->b##NB##_refract_i = q.refract;                                                      \
-            t->b##NB##_continue_i = q.cont;                                                        \
-            t->b##NB##_user_i = uint16_t(user);                                                    \
+            set_field(t->TAG##_t_i, 0, NB - 1, q.t);                                             \
+            for (int c = 0; c < csgrt::kNumCoefs; ++c) set_field(t->TAG##_coef_i, c * NB, NB, q.coef[c]); \
+            t->TAG##_ior_from_i = uint16_t(q.ior_from);                                          \
+            t->TAG##_ior_to_i = uint16_t(q.ior_to);                                              \
+            t->TAG##_lights_i = uint8_t(q.lights);                                               \
+            t->TAG##_reflect_i = q.reflect;                                                      \
+            t->TAG##_refract_i = q.refract;                                                      \
+            t->TAG##_continue_i = q.cont;                                                        \
+            t->TAG##_user_i = uint16_t(user);                                                    \
         }                                                                                          \
         static Out read(Top* t) {                                                                  \
             Out o;                                                                                 \
-            o.kind = t->b##NB##_kind_o;                                                            \
-            o.light = t->b##NB##_light_o;                                                          \
-            o.last = t->b##NB##_last_o;                                                            \
-            o.in_range = t->b##NB##_in_range_o;                                                    \
-            o.lit = t->b##NB##_lit_o;                                                              \
+            o.kind = t->TAG##_kind_o;                                                            \
+            o.light = t->TAG##_light_o;                                                          \
+            o.last = t->TAG##_last_o;                                                            \
+            o.in_range = t->TAG##_in_range_o;                                                    \
+            o.lit = t->TAG##_lit_o;                                                              \
             for (int i = 0; i < 3; ++i) {                                                          \
-                o.o[i] = get_field(t->b##NB##_o_o, i * NB, NB);                                    \
-                o.d[i] = get_field(t->b##NB##_d_o, i * NB, NB);                                    \
+                o.o[i] = get_field(t->TAG##_o_o, i * NB, NB);                                    \
+                o.d[i] = get_field(t->TAG##_d_o, i * NB, NB);                                    \
             }                                                                                      \
-            o.dist = i64(get_ufield(t->b##NB##_dist_o, 0, NB + 1));                                \
-            o.user = t->b##NB##_user_o;                                                            \
+            o.dist = i64(get_ufield(t->TAG##_dist_o, 0, NB + 1));                                \
+            o.user = t->TAG##_user_o;                                                            \
             return o;                                                                              \
         }                                                                                          \
     };
-SPAWN_DUT(12)
-SPAWN_DUT(16)
-SPAWN_DUT(24)
-SPAWN_DUT(32)
+SPAWN_DUT(12, b12, 12)
+SPAWN_DUT(16, b16, 16)
+SPAWN_DUT(24, b24, 24)
+SPAWN_DUT(32, b32, 32)
+SPAWN_DUT(kB16Refl, b16r, 16)
+SPAWN_DUT(kB16Shadow, b16s, 16)
 
 // ---- the model's answer ---------------------------------------------------------
 // normal_fx needs a scene: one leaf holding the request's quadric.
@@ -483,9 +493,10 @@ struct Stats {
 
 // Stall modes for the output: per clock with probability p_stall, or in
 // bursts (ready low for up to ~400 clocks at a time) that fill the front.
-template <int NB>
+template <int ID>
 Stats run(const std::vector<Request>& reqs, const std::vector<V3>& lights, double p_gap, double p_stall,
           bool bursts, uint64_t seed) {
+    constexpr int NB = Dut<ID>::kBits;
     Stats st;
     Model model(NB);
     std::vector<Child> exp;
@@ -509,8 +520,8 @@ Stats run(const std::vector<Request>& reqs, const std::vector<V3>& lights, doubl
 
     tb::Harness<Top> h;
     Top* t = h.top.get();
-    const tb::StreamPorts p = Dut<NB>::ports(t);
-    Dut<NB>::lights(t, lights);
+    const tb::StreamPorts p = Dut<ID>::ports(t);
+    Dut<ID>::lights(t, lights);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     auto tick = [&] {
@@ -535,7 +546,7 @@ Stats run(const std::vector<Request>& reqs, const std::vector<V3>& lights, doubl
     for (uint64_t cyc = 0;; ++cyc) {
         if (sent < reqs.size() && !pending) pending = !(u01(rng) < p_gap);
         *p.valid_i = pending;
-        if (pending) Dut<NB>::drive(t, reqs[sent], uint32_t(sent & 0xffff));
+        if (pending) Dut<ID>::drive(t, reqs[sent], uint32_t(sent & 0xffff));
         if (bursts) {
             if (u01(rng) < (stalled ? 1.0 / 200 : 1.0 / 300)) stalled = !stalled;
         } else {
@@ -552,7 +563,7 @@ Stats run(const std::vector<Request>& reqs, const std::vector<V3>& lights, doubl
                 ++st.extra;
             } else {
                 const Child& c = exp[received];
-                const std::string msg = compare(NB, Dut<NB>::read(t), c, uint32_t(c.req & 0xffff));
+                const std::string msg = compare(NB, Dut<ID>::read(t), c, uint32_t(c.req & 0xffff));
                 if (!msg.empty()) {
                     ++st.mismatches;
                     if (st.messages.size() < 6)
@@ -668,34 +679,44 @@ TEST(Spawn, Bits32) { all_checks<32>(tb::seed(3200)); }
 // (5F+63), one child per clock when hits are waiting, a hit every third
 // clock at most; the front holds a hit's credit for 3F+43 clocks and has 32,
 // so at BITS 24 and 32 a hit every (3F+43)/32 clocks at most.
-template <int NB>
-void throughput() {
+// Without refraction the sequencer waits for the normal's queue instead of
+// the refraction stages' (F+7 clocks fewer): latency 4F+56, a credit held
+// for 2F+36 clocks.
+template <int ID>
+void throughput(bool reflection = true, bool refraction = true) {
+    constexpr int NB = Dut<ID>::kBits;
     const csgrt::Formats fmt(NB);
     const int F = fmt.frac;
+    const int latency = refraction ? 5 * F + 63 : 4 * F + 56, hold = refraction ? 3 * F + 43 : 2 * F + 36;
     std::mt19937_64 rng(77);
     const std::vector<V3> lights = random_lights(fmt, rng);
     for (int per_hit : {1, 2, 3, 4, 5, 11}) {
         std::vector<Request> reqs;
+        // children: 1 light, + refract, + reflect, + 1 light, + continue; 11: everything
+        // (the kinds the build does not have are replaced by lights)
+        int n = 0;
         for (int i = 0; i < 600; ++i) {
             Request q = random_request(fmt, rng, lights);
-            // children: 1 light, + refract, + reflect, + 1 light, + continue; 11: everything
             q.lights = per_hit >= 11 ? 0xff : per_hit >= 4 ? 0x41 : 0x10;
-            q.refract = per_hit >= 2;
-            q.reflect = per_hit >= 3;
+            q.refract = refraction && per_hit >= 2;
+            q.reflect = reflection && per_hit >= 3;
+            if (!refraction && per_hit >= 2) q.lights |= 0x02;
+            if (!reflection && per_hit >= 3) q.lights |= 0x04;
             q.cont = per_hit == 5 || per_hit == 11;
             reqs.push_back(q);
+            n = __builtin_popcount(q.lights) + q.refract + q.reflect + q.cont;
         }
-        const Stats s = run<NB>(reqs, lights, 0.0, 0.0, false, 5);
+        const Stats s = run<ID>(reqs, lights, 0.0, 0.0, false, 5);
         EXPECT_TRUE(s.ok()) << s.summary();
-        EXPECT_EQ(s.children, size_t(per_hit) * reqs.size());
+        EXPECT_EQ(s.children, size_t(n) * reqs.size());
         const double busy = double(s.cycles - 300 - s.min_latency);
-        const double hit_interval = std::max({double(per_hit), 3.0, double(3 * F + 43) / 32.0});
-        std::printf("spawn BITS=%d back to back, %d children per hit: %llu children in %llu cycles: %.3f clocks per "
-                    "child, %.3f per hit (bound %.3f); latency %d..%d\n",
-                    NB, per_hit, (unsigned long long)s.children, (unsigned long long)s.cycles,
-                    busy / double(s.children), busy / double(s.requests), hit_interval, s.min_latency,
-                    s.max_latency);
-        EXPECT_EQ(s.min_latency, 5 * F + 63);
+        const double hit_interval = std::max({double(n), 3.0, double(hold) / 32.0});
+        std::printf("spawn BITS=%d%s back to back, %d children per hit: %llu children in %llu cycles: %.3f clocks "
+                    "per child, %.3f per hit (bound %.3f); latency %d..%d\n",
+                    NB, refraction ? "" : reflection ? " (no refraction)" : " (shadows only)", n,
+                    (unsigned long long)s.children, (unsigned long long)s.cycles, busy / double(s.children),
+                    busy / double(s.requests), hit_interval, s.min_latency, s.max_latency);
+        EXPECT_EQ(s.min_latency, latency);
         EXPECT_LE(busy / double(s.requests), hit_interval + 0.02);
     }
 }
@@ -705,6 +726,111 @@ TEST(Spawn, ThroughputAndLatency) {
     throughput<16>();
     throughput<24>();
     throughput<32>();
+}
+
+// The builds without refraction (b16r) and with shadows only (b16s): the
+// scenes' hits and random hits with only the kinds the build has
+// (s_refract_i = 0; for b16s also s_reflect_i = 0), against the model like
+// the full builds.
+template <int ID>
+void reduced_checks(bool reflection, uint64_t seed) {
+    constexpr int NB = Dut<ID>::kBits;
+    const char* what = reflection ? "no refraction" : "shadows only";
+    auto restrict_kinds = [&](std::vector<Request> reqs) {
+        std::vector<Request> out;
+        for (Request q : reqs) {
+            q.refract = false;
+            if (!reflection) q.reflect = false;
+            if (q.lights || q.reflect || q.cont) out.push_back(q);
+        }
+        return out;
+    };
+    Stats total;
+    for (const char* name : {"mirror", "glass", "paper/fig08_reflect"}) {
+        const csgrt::CompiledScene cs = compile(name, NB, 64, 48);
+        std::mt19937_64 rng(seed++);
+        const std::vector<Request> reqs = restrict_kinds(scene_requests(cs, scaled(4000), rng));
+        const Stats s = run<ID>(reqs, scene_lights(cs), 0.3, 0.25, false, seed++);
+        EXPECT_TRUE(s.ok()) << "BITS=" << NB << " (" << what << ") " << name << ": " << s.summary();
+        std::printf("spawn BITS=%d (%s) %s (%zu lights): %s\n", NB, what, name, cs.lights.size(),
+                    s.summary().c_str());
+        add(total, s);
+    }
+    const csgrt::Formats fmt(NB);
+    for (bool bursts : {false, true}) {
+        std::mt19937_64 rng(seed++);
+        const std::vector<V3> lights = random_lights(fmt, rng);
+        std::vector<Request> reqs;
+        for (size_t i = 0; i < scaled(bursts ? 4000 : 12000); ++i) reqs.push_back(random_request(fmt, rng, lights));
+        reqs = restrict_kinds(reqs);
+        const Stats s = run<ID>(reqs, lights, bursts ? 0.1 : 0.3, 0.3, bursts, seed++);
+        EXPECT_TRUE(s.ok()) << "BITS=" << NB << " (" << what << ") random: " << s.summary();
+        std::printf("spawn BITS=%d (%s) random%s: %s (input refused on %llu clocks, at most %zu hits outstanding)\n",
+                    NB, what, bursts ? ", output stalled in bursts" : "", s.summary().c_str(),
+                    (unsigned long long)s.in_blocked, s.max_outstanding);
+        add(total, s);
+        if (bursts) EXPECT_GT(s.max_outstanding, 32u) << "the bursts should fill the front";
+    }
+    EXPECT_EQ(total.kinds[REFRACT] + total.kinds[TIR_REFLECT], 0u);
+    if (reflection)
+        EXPECT_GT(total.kinds[REFLECT], 0u);
+    else
+        EXPECT_EQ(total.kinds[REFLECT], 0u);
+    EXPECT_GT(total.kinds[SHADOW], 0u);
+    EXPECT_GT(total.kinds[CONTINUE], 0u);
+    EXPECT_GT(total.unlit, 0u) << "no light behind a surface";
+    EXPECT_GT(total.lit, 0u);
+    EXPECT_GT(total.out_of_range, 0u) << "no hit point out of range";
+    EXPECT_GT(total.face_zero, 0u) << "no n . d = 0";
+    EXPECT_GT(total.lit_zero, 0u) << "no n . (light - p) = 0";
+    EXPECT_GT(total.p_ties, 0u) << "no tie in the hit point";
+}
+
+TEST(Spawn, Bits16NoRefraction) {
+    reduced_checks<kB16Refl>(true, tb::seed(1610));
+    throughput<kB16Refl>(true, false);
+}
+// A request for a kind the build does not have stops the simulation.
+template <int ID>
+void requests_missing_kind(bool reflect, bool refract) {
+    // (in the death test's child) $display's message to stderr, unbuffered
+    std::fflush(stdout);
+    dup2(2, 1);
+    setvbuf(stdout, nullptr, _IONBF, 0);
+    tb::Harness<Top> h;
+    Top* t = h.top.get();
+    const tb::StreamPorts p = Dut<ID>::ports(t);
+    const csgrt::Formats fmt(Dut<ID>::kBits);
+    std::mt19937_64 rng(3);
+    const std::vector<V3> lights = random_lights(fmt, rng);
+    Dut<ID>::lights(t, lights);
+    Request q = random_request(fmt, rng, lights);
+    q.lights = 1;
+    q.reflect = reflect;
+    q.refract = refract;
+    auto tick = [&] {
+        *p.clk = 1;
+        t->eval();
+        *p.clk = 0;
+        t->eval();
+    };
+    *p.rst_n = 0;
+    *p.valid_i = 0;
+    *p.ready_i = 1;
+    for (int i = 0; i < 4; ++i) tick();
+    *p.rst_n = 1;
+    *p.valid_i = 1;
+    Dut<ID>::drive(t, q, 0);
+    for (int i = 0; i < 8; ++i) tick();
+}
+TEST(SpawnDeathTest, RequestForAMissingKindStops) {
+    EXPECT_DEATH(requests_missing_kind<kB16Refl>(false, true), "child kind this build does not have");
+    EXPECT_DEATH(requests_missing_kind<kB16Shadow>(true, false), "child kind this build does not have");
+}
+
+TEST(Spawn, Bits16ShadowsOnly) {
+    reduced_checks<kB16Shadow>(false, tb::seed(1620));
+    throughput<kB16Shadow>(false, false);
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 `default_nettype none
 // tb_spawn — Verilator top for tb_spawn.cpp: csgrt_spawn (MAX_LIGHTS 8,
-// USER_WIDTH 16) at BITS 12, 16, 24 and 32, one clock each so that only the
-// instance under test is evaluated.
+// USER_WIDTH 16) at BITS 12, 16, 24 and 32 with every child kind, and at
+// BITS 16 without refraction (b16r: SHADOWS, REFLECTION) and with shadows
+// only (b16s), one clock each so that only the instance under test is
+// evaluated.
 module tb_spawn (
     input  wire              b12_clk_i,
     input  wire              b12_rst_ni,
@@ -110,7 +112,61 @@ module tb_spawn (
     output wire [95:0]  b32_d_o,
     output wire [32:0]      b32_dist_o,
     output wire              b32_lit_o,
-    output wire [15:0]    b32_user_o
+    output wire [15:0]    b32_user_o,
+    input  wire              b16r_clk_i,
+    input  wire              b16r_rst_ni,
+    input  wire [383:0] b16r_light_pos_i,
+    input  wire              b16r_valid_i,
+    output wire              b16r_ready_o,
+    input  wire [47:0]  b16r_o_i,
+    input  wire [47:0]  b16r_d_i,
+    input  wire [14:0]    b16r_t_i,
+    input  wire [159:0] b16r_coef_i,
+    input  wire [15:0]       b16r_ior_from_i,
+    input  wire [15:0]       b16r_ior_to_i,
+    input  wire [7:0]   b16r_lights_i,
+    input  wire              b16r_reflect_i,
+    input  wire              b16r_refract_i,
+    input  wire              b16r_continue_i,
+    input  wire [15:0]    b16r_user_i,
+    output wire              b16r_valid_o,
+    input  wire              b16r_ready_i,
+    output wire              b16r_last_o,
+    output wire [2:0]        b16r_kind_o,
+    output wire [2:0]   b16r_light_o,
+    output wire [47:0]  b16r_o_o,
+    output wire              b16r_in_range_o,
+    output wire [47:0]  b16r_d_o,
+    output wire [16:0]      b16r_dist_o,
+    output wire              b16r_lit_o,
+    output wire [15:0]    b16r_user_o,
+    input  wire              b16s_clk_i,
+    input  wire              b16s_rst_ni,
+    input  wire [383:0] b16s_light_pos_i,
+    input  wire              b16s_valid_i,
+    output wire              b16s_ready_o,
+    input  wire [47:0]  b16s_o_i,
+    input  wire [47:0]  b16s_d_i,
+    input  wire [14:0]    b16s_t_i,
+    input  wire [159:0] b16s_coef_i,
+    input  wire [15:0]       b16s_ior_from_i,
+    input  wire [15:0]       b16s_ior_to_i,
+    input  wire [7:0]   b16s_lights_i,
+    input  wire              b16s_reflect_i,
+    input  wire              b16s_refract_i,
+    input  wire              b16s_continue_i,
+    input  wire [15:0]    b16s_user_i,
+    output wire              b16s_valid_o,
+    input  wire              b16s_ready_i,
+    output wire              b16s_last_o,
+    output wire [2:0]        b16s_kind_o,
+    output wire [2:0]   b16s_light_o,
+    output wire [47:0]  b16s_o_o,
+    output wire              b16s_in_range_o,
+    output wire [47:0]  b16s_d_o,
+    output wire [16:0]      b16s_dist_o,
+    output wire              b16s_lit_o,
+    output wire [15:0]    b16s_user_o
 );
 
     csgrt_spawn #(.BITS(12), .MAX_LIGHTS(8), .USER_WIDTH(16)) u_b12 (
@@ -152,6 +208,30 @@ module tb_spawn (
         .m_valid_o(b32_valid_o), .m_ready_i(b32_ready_i), .m_last_o(b32_last_o), .m_kind_o(b32_kind_o),
         .m_light_o(b32_light_o), .m_o_o(b32_o_o), .m_in_range_o(b32_in_range_o), .m_d_o(b32_d_o),
         .m_dist_o(b32_dist_o), .m_lit_o(b32_lit_o), .m_user_o(b32_user_o));
+
+    // BITS 16, shadows and reflection (no refraction datapath)
+    csgrt_spawn #(.BITS(16), .MAX_LIGHTS(8), .USER_WIDTH(16),
+                  .SHADOWS(1), .REFLECTION(1), .REFRACTION(0)) u_b16r (
+        .clk_i(b16r_clk_i), .rst_ni(b16r_rst_ni), .light_pos_i(b16r_light_pos_i),
+        .s_valid_i(b16r_valid_i), .s_ready_o(b16r_ready_o), .s_o_i(b16r_o_i), .s_d_i(b16r_d_i), .s_t_i(b16r_t_i),
+        .s_coef_i(b16r_coef_i), .s_ior_from_i(b16r_ior_from_i), .s_ior_to_i(b16r_ior_to_i),
+        .s_lights_i(b16r_lights_i), .s_reflect_i(b16r_reflect_i), .s_refract_i(b16r_refract_i),
+        .s_continue_i(b16r_continue_i), .s_user_i(b16r_user_i),
+        .m_valid_o(b16r_valid_o), .m_ready_i(b16r_ready_i), .m_last_o(b16r_last_o), .m_kind_o(b16r_kind_o),
+        .m_light_o(b16r_light_o), .m_o_o(b16r_o_o), .m_in_range_o(b16r_in_range_o), .m_d_o(b16r_d_o),
+        .m_dist_o(b16r_dist_o), .m_lit_o(b16r_lit_o), .m_user_o(b16r_user_o));
+
+    // BITS 16, shadows only
+    csgrt_spawn #(.BITS(16), .MAX_LIGHTS(8), .USER_WIDTH(16),
+                  .SHADOWS(1), .REFLECTION(0), .REFRACTION(0)) u_b16s (
+        .clk_i(b16s_clk_i), .rst_ni(b16s_rst_ni), .light_pos_i(b16s_light_pos_i),
+        .s_valid_i(b16s_valid_i), .s_ready_o(b16s_ready_o), .s_o_i(b16s_o_i), .s_d_i(b16s_d_i), .s_t_i(b16s_t_i),
+        .s_coef_i(b16s_coef_i), .s_ior_from_i(b16s_ior_from_i), .s_ior_to_i(b16s_ior_to_i),
+        .s_lights_i(b16s_lights_i), .s_reflect_i(b16s_reflect_i), .s_refract_i(b16s_refract_i),
+        .s_continue_i(b16s_continue_i), .s_user_i(b16s_user_i),
+        .m_valid_o(b16s_valid_o), .m_ready_i(b16s_ready_i), .m_last_o(b16s_last_o), .m_kind_o(b16s_kind_o),
+        .m_light_o(b16s_light_o), .m_o_o(b16s_o_o), .m_in_range_o(b16s_in_range_o), .m_d_o(b16s_d_o),
+        .m_dist_o(b16s_dist_o), .m_lit_o(b16s_lit_o), .m_user_o(b16s_user_o));
 endmodule
 
 `default_nettype wire
