@@ -30,7 +30,8 @@
 //   once per light (max(1, lights) items; a miss or no light: one item
 //   that adds nothing), then popped.
 // Segment B, per light item (one global enable, the output skid's ready):
-//   B1  add (1)   lv = align(light, F, PF) - ps
+//   B1  add (1)   lv = align(light, F, PF) - ps (the aligned light positions
+//                 are registered config; light k by a constant-position mux)
 //   B2  mul (2)   lv_i^2                         3 csgrt_mul 18 x 18
 //   B3  add (1)   |lv|^2
 //   B4  sqrt(17)  csgrt_sqrt_core
@@ -61,7 +62,8 @@
 // a hit pixel every max(1, lights) clocks, a miss every clock.
 // Handshake: valid/ready on both sides; s_ready_o is skid A's registered
 // ready, never combinational from m_ready_i. Config (lights, background) is
-// read when a pixel's items are issued; hold it steady while shading.
+// read when a pixel's items are issued (the light positions through a
+// register: one clock earlier); hold it steady while shading.
 module csgrt_shade #(
     parameter BITS       = 24,                // coordinate width B (12..32)
     parameter MAX_LIGHTS = 8,                 // point lights (>= 1)
@@ -391,18 +393,39 @@ module csgrt_shade #(
     // Segment B: per light item
     // =========================================================================
     // ---- B1: lv = align(light, F, PF) - ps ------------------------------------
-    localparam LIDX = $clog2(MAX_LIGHTS * 3 * B + 1) + 1;   // index width into the light vectors
-    wire [LIDX-1:0]  k_l = {{(LIDX-KW_L){1'b0}}, k_q};
+    // The light positions are static configuration: every light's aligned
+    // position is registered (lpa_q, one clock behind light_pos_i), and the
+    // item's light is chosen from those registers by a mux over the constant
+    // positions k (no index arithmetic), so B1 is k_q -> mux -> subtract.
+    // The light colour likewise (from light_color_i directly).
     wire [3*GW-1:0]  lv_d;
-    wire [3*16-1:0]  lcol_d = (EXT_LIGHT != 0) ? lc_color_i : light_color_i[k_l * 48 +: 48];
+    reg  [MAX_LIGHTS*3*PSW-1:0] lpa_q;   // light k, axis i at (3k+i)*PSW, PF frac
+    generate
+        for (j = 0; j < MAX_LIGHTS * 3; j = j + 1) begin : g_lpa
+            wire [PSW-1:0] lpa;
+            csgrt_align #(.IN_W(B), .OUT_W(PSW), .FROM(F), .TO(12)) u_lp (
+                .v_i(light_pos_i[j*B +: B]), .v_o(lpa));
+            always @(posedge clk_i) lpa_q[j*PSW +: PSW] <= lpa;
+        end
+    endgenerate
+    reg [3*PSW-1:0] lpa_sel;
+    reg [47:0]      lcol_sel;
+    integer kl;
+    always @* begin
+        lpa_sel  = {(3*PSW){1'b0}};
+        lcol_sel = 48'd0;
+        for (kl = 0; kl < MAX_LIGHTS; kl = kl + 1)
+            if ({{(32-KW_L){1'b0}}, k_q} == kl) begin
+                lpa_sel  = lpa_q[kl*3*PSW +: 3*PSW];
+                lcol_sel = light_color_i[kl*48 +: 48];
+            end
+    end
+    wire [3*16-1:0]  lcol_d = (EXT_LIGHT != 0) ? lc_color_i : lcol_sel;
     assign lc_tag_o = sq_pix[11:0];
     assign lc_k_o   = {{($clog2(MAX_LIGHTS+1)-KW_L){1'b0}}, k_q};
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_b1
-            wire [B-1:0]   lp = light_pos_i[(k_l * 3 + i) * B +: B];
-            wire [PSW-1:0] lpa;
-            csgrt_align #(.IN_W(B), .OUT_W(PSW), .FROM(F), .TO(12)) u_lp (.v_i(lp), .v_o(lpa));
-            assign lv_d[i*GW +: GW] = lpa - sq_ps[i*PSW +: PSW];
+            assign lv_d[i*GW +: GW] = lpa_sel[i*PSW +: PSW] - sq_ps[i*PSW +: PSW];
         end
     endgenerate
     // item flags: {use, last, first}

@@ -32,7 +32,17 @@ Results: docs/accuracy/results.csv, one row per bits x method x scene (with
 date, machine, commit). The sweep resumes: rows already in the CSV are
 skipped unless --force (--redo-model measures only the model's columns
 again); Verilator builds are cached per configuration under build/sim/ (the
-`make sim` rule), synthesis results under out/accuracy/synth/.
+`make sim` rule), synthesis results under out/accuracy/synth/<tag>/. Rows
+already in the CSV that lack the synthesis columns get only those (no
+simulation, no model run); a run that places and routes (no
+--stop-after-synth) replaces a row's yosys-only area; a synth.sh run already
+in out/accuracy/synth/<tag>/ (e.g. started by hand with --out there) is read,
+not redone. For the synthesis columns alone, e.g.:
+
+    tools/accuracy.py run --bits 12,20 --synth-tree-height 7 --synth-effects none \
+                      --synth-freq 50 --stop-after-synth    # yosys area (b<B>_h7_fxnone_f50_yosys)
+    tools/accuracy.py run --bits 16 --synth-tree-height 7 --synth-effects none --synth-freq 50
+                                                            # + place and route: Fmax (b16_h7_fxnone_f50)
 
     tools/accuracy.py [--bits 16,24] [--methods exact,epsilon] [--scenes a.pov,b.pov]
                       [--no-synth] [--force] ...        sweep, then write the report
@@ -294,6 +304,38 @@ def synth_has_effects():
     return "--effects)" in open(os.path.join(ROOT, "tools", "synth.sh")).read()
 
 
+def read_synth(out, config, stop_after_synth, rc, t0):
+    """The figures of the synth.sh run in out: nextpnr's report.json (written at or after t0), or with
+    stop_after_synth yosys's cell counts (yosys_stat.txt, rc 0); None when there is no such result."""
+    s = {"config": config, "fmax_mhz": None, "lut4": None, "ff": None, "mult18x18d": None, "bram": None,
+         "area_source": "", "status": ""}
+    rep_path = os.path.join(out, "report.json")
+    stat_path = os.path.join(out, "yosys_stat.txt")
+    if not stop_after_synth and os.path.exists(rep_path) and os.path.getmtime(rep_path) >= t0:
+        rep = json.load(open(rep_path))
+        util = rep.get("utilization", {})
+        used = lambda k: util[k]["used"] if k in util else None
+        s.update(lut4=used("LUT4"), ff=used("FF"), mult18x18d=used("MULT18X18D"), bram=used("BRAM (DP16KD)"))
+        if rep.get("placed_and_routed"):
+            s["fmax_mhz"] = rep.get("fmax_core_mhz")
+            s["status"] = "timing met" if rep.get("timing_met") else "timing not met"
+            s["area_source"] = "nextpnr"
+        else:
+            s["status"] = "does not fit" if any("does not fit" in e for e in rep.get("errors", [])) else f"nextpnr failed ({rc})"
+            s["area_source"] = "nextpnr packing (not placed)"
+        return s
+    if stop_after_synth and rc == 0 and os.path.exists(stat_path) and os.path.getmtime(stat_path) >= t0:
+        stat = open(stat_path).read()
+        def count(cell):   # the same two layouts of yosys's stat as synth.sh reads
+            m = re.findall(rf"^\s+{cell}\s+(\d+)\s*$", stat, re.M) or re.findall(rf"^\s+(\d+)\s+{cell}\s*$", stat, re.M)
+            return int(m[-1]) if m else 0
+        # nextpnr's LUT4 count (TRELLIS_COMB) holds both halves of each carry cell
+        s.update(lut4=count("LUT4") + 2 * count("CCU2C"), ff=count("TRELLIS_FF"), mult18x18d=count("MULT18X18D"),
+                 bram=count("DP16KD"), area_source="yosys (LUT4 + 2 CCU2C)", status="yosys only")
+        return s
+    return None
+
+
 def synth(bits, a):
     """Synthesis figures for this width (tools/synth.sh; cached per configuration)."""
     effects = a.synth_effects
@@ -314,6 +356,14 @@ def synth(bits, a):
         s = json.load(open(summary))
         log(f"BITS={bits}: synthesis {tag}: cached ({s['status']})")
         return s
+    if not a.force_synth:
+        # a synth.sh run already in the directory (e.g. started by hand with --out there): read, not redone
+        s = read_synth(out, config, a.stop_after_synth, 0, 0)
+        if s is not None:
+            log(f"BITS={bits}: synthesis {tag}: read from the synth.sh run already in {out} ({s['status']})")
+            with open(summary, "w") as f:
+                json.dump(s, f, indent=1)
+            return s
     cmd = ["tools/synth.sh", "--bits", str(bits), "--freq", f"{a.synth_freq:g}",
            "--tree-height", str(a.synth_tree_height), "--out", out]
     if synth_has_effects():
@@ -330,31 +380,10 @@ def synth(bits, a):
     for line in p.stdout:            # synth.sh's own progress lines
         print("    " + line.rstrip(), flush=True)
     rc = p.wait()
-    s = {"config": config, "fmax_mhz": None, "lut4": None, "ff": None, "mult18x18d": None, "bram": None,
-         "area_source": "", "status": ""}
-    rep_path = os.path.join(out, "report.json")
-    if os.path.exists(rep_path) and os.path.getmtime(rep_path) >= t0 and not a.stop_after_synth:
-        rep = json.load(open(rep_path))
-        util = rep.get("utilization", {})
-        used = lambda k: util[k]["used"] if k in util else None
-        s.update(lut4=used("LUT4"), ff=used("FF"), mult18x18d=used("MULT18X18D"), bram=used("BRAM (DP16KD)"))
-        if rep.get("placed_and_routed"):
-            s["fmax_mhz"] = rep.get("fmax_core_mhz")
-            s["status"] = "timing met" if rep.get("timing_met") else "timing not met"
-            s["area_source"] = "nextpnr"
-        else:
-            s["status"] = "does not fit" if any("does not fit" in e for e in rep.get("errors", [])) else f"nextpnr failed ({rc})"
-            s["area_source"] = "nextpnr packing (not placed)"
-    elif a.stop_after_synth and rc == 0 and os.path.exists(os.path.join(out, "yosys_stat.txt")):
-        stat = open(os.path.join(out, "yosys_stat.txt")).read()
-        def count(cell):   # the same two layouts of yosys's stat as synth.sh reads
-            m = re.findall(rf"^\s+{cell}\s+(\d+)\s*$", stat, re.M) or re.findall(rf"^\s+(\d+)\s+{cell}\s*$", stat, re.M)
-            return int(m[-1]) if m else 0
-        # nextpnr's LUT4 count (TRELLIS_COMB) holds both halves of each carry cell
-        s.update(lut4=count("LUT4") + 2 * count("CCU2C"), ff=count("TRELLIS_FF"), mult18x18d=count("MULT18X18D"),
-                 bram=count("DP16KD"), area_source="yosys (LUT4 + 2 CCU2C)", status="yosys only")
-    else:
-        s["status"] = f"synth.sh failed ({rc})"
+    s = read_synth(out, config, a.stop_after_synth, rc, t0)
+    if s is None:
+        s = {"config": config, "fmax_mhz": None, "lut4": None, "ff": None, "mult18x18d": None, "bram": None,
+             "area_source": "", "status": f"synth.sh failed ({rc})"}
     if not s["status"].startswith("synth.sh failed"):
         # a result (also "does not fit") is kept; a tool failure is tried again next time
         with open(summary, "w") as f:
@@ -446,7 +475,7 @@ def sweep(a):
         todo = {ms: k for ms, k in keys.items() if a.force or k not in index}
         # rows already there that only lack the synthesis columns get them now
         need_synth = (not a.no_synth) and "exact" in a.methods and any(
-            synth_missing(index[k]) for ms, k in keys.items() if ms[0] == "exact" and k in index)
+            synth_missing(index[k], a) for ms, k in keys.items() if ms[0] == "exact" and k in index)
         redo = a.redo_model and any(k in index for k in keys.values())
         if not todo and not need_synth and not redo:
             step += len(keys)
@@ -471,7 +500,7 @@ def sweep(a):
                         r["model_date"] = now
                         r["notes"] = "; ".join(x for x in (r.get("model_notes"), r.get("rtl_notes")) if x)
                         done.append("model columns redone")
-                    if method == "exact" and syn is not None and synth_missing(r):
+                    if method == "exact" and syn is not None and synth_missing(r, a, syn):
                         fill_synth(r, syn, frame_size)
                         done.append("synthesis columns added")
                     if done:
@@ -525,9 +554,15 @@ def sweep(a):
     log(f"results: {os.path.relpath(a.csv)} ({len(rows)} rows)")
 
 
-def synth_missing(r):
-    """No synthesis result in the row yet (never run, or the tools failed: tried again)."""
-    return not r.get("synth_status") or r["synth_status"].startswith("synth.sh failed")
+def synth_missing(r, a=None, syn=None):
+    """No synthesis result in the row yet (never run, or the tools failed: tried again), or only
+    yosys's area where this run places and routes (a: without --stop-after-synth; syn: its result)."""
+    st = r.get("synth_status") or ""
+    if not st or st.startswith("synth.sh failed"):
+        return True
+    if st == "yosys only" and a is not None and not a.stop_after_synth:
+        return syn is None or (syn["status"] != "yosys only" and not syn["status"].startswith("synth.sh failed"))
+    return False
 
 
 def fill_synth(r, syn, frame_size):
@@ -693,12 +728,14 @@ def report(a):
         p = num(r, "psnr_db")
         return None if p is None else (0.0 if math.isinf(p) else 255.0 ** 2 / 10 ** (p / 10))
     fronts = {}
+    measured = {}   # the points with a time (at Fmax when any Fmax was measured) and an error
     fig, axes = plt.subplots(1, max(1, len(scenes)), figsize=(3.2 * max(1, len(scenes)), 3.4), squeeze=False)
     for ax, s in zip(axes[0], scenes):
         pts = [(time_of(r), err_of(r), int(r["bits"])) for r in exact if r["scene"] == s]
         pts = [p for p in pts if p[0] is not None and p[1] is not None]
         front = pareto(pts)
         fronts[s] = front
+        measured[s] = pts
         if pts:
             ax.scatter([p[0] for p in pts], [p[1] for p in pts], color="lightgrey", zorder=2)
             f = sorted(front)
@@ -716,7 +753,8 @@ def report(a):
     plots["pareto"] = os.path.join(a.plots, "pareto.png")
     fig.tight_layout(); fig.savefig(plots["pareto"], dpi=110); plt.close(fig)
 
-    md = render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, frame, fronts, plots, rel, a)
+    md = render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, frame, (fronts, measured), plots,
+                   rel, a)
     with open(a.md, "w") as f:
         f.write(md)
     log(f"report: {os.path.relpath(a.md)}, plots in {os.path.relpath(a.plots)}")
@@ -774,12 +812,18 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
     add("- **Synthesis.** tools/synth.sh (yosys synth_ecp5, nextpnr-ecp5 for the ULX3S LFE5U-85F): Fmax of "
         "the core clock, LUT4, FF, MULT18X18D, DP16KD. Frame time = projected cycles / Fmax. " +
         (f"Configurations: {'; '.join('`' + c + '`' for c in configs)}. " if configs else "") +
-        ("**The synthesised core lacks the effect units the simulation had** (synth.sh without --effects): "
-         "its Fmax and area are of a smaller core. " if any("effects=none" in c for c in configs)
+        ("**The synthesised core lacks the effect units the simulation had** (synth.sh --effects none, the "
+         "configuration that fits the 85F): its Fmax and area are of a smaller core; the frame times combine "
+         "its Fmax with the cycles of the core with every effect unit. " if any("effects=none" in c for c in configs)
          and "fx-all" in r0["hw_config"] else "") +
-        ("" if have_synth else "**Not run for these rows** (`--no-synth`, or the design does not fit): the "
-         "synthesis columns are empty, and the speed figures below use a nominal "
-         f"{nominal:g} MHz clock, labelled as such, not a measured Fmax."))
+        ("**Not run for these rows** (`--no-synth`, or the design does not fit): the synthesis columns are "
+         f"empty, and the speed figures below use a nominal {nominal:g} MHz clock, labelled as such, not a "
+         "measured Fmax." if not have_synth and not have_area else
+         "*area source* says where the area comes from: `nextpnr` (placed and routed: TRELLIS_COMB, FF, blocks "
+         "after packing) or `yosys` (`--stop-after-synth`: yosys's LUT4 + 2 per CCU2C carry cell, TRELLIS_FF, "
+         "blocks; a few per cent below nextpnr's count). Fmax only where the design was placed and routed; "
+         "where it was not, the speed figures use a nominal "
+         f"{nominal:g} MHz clock, marked with *."))
     add("- **Verilator wall time** of the simulated frame (the machine is shared with other jobs: a rough "
         "figure; the CSV's `sim_load` is the 1-minute load average when the frame started).")
     add(f"- **Image error.** The golden model's fixed-point image at {r0['error_size']} (the RTL equals it "
@@ -800,10 +844,10 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
 
     # hardware per width
     add("## Per width\n")
-    add("| BITS | isect latency | Fmax MHz | LUT4 | FF | MULT18X18D | BRAM | synthesis | violations exact | "
+    add("| BITS | isect latency | Fmax MHz | LUT4 | FF | MULT18X18D | BRAM | area source | synthesis | violations exact | "
         "violations epsilon | thin-shell rays below resolution | worst PSNR exact dB | worst PSNR exact, primary | "
         "worst PSNR epsilon, primary |")
-    add("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    add("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for b in bits_all:
         e = [r for r in exact if int(r["bits"]) == b]
         p = [r for r in rows if int(r["bits"]) == b and r["method"] == "epsilon"]
@@ -815,7 +859,8 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
             return "∞" if math.isinf(min(v)) else f"{min(v):.1f}"
         c = (lambda col, d=None: cell(rr, col, d)) if e else (lambda col, d=None: "—")
         add(f"| {b} | {c('isect_latency')} | {c('fmax_mhz', 1)} | {c('lut4')} | {c('ff')} | {c('mult18x18d')} | "
-            f"{c('bram')} | {(rr.get('synth_status') or 'not run') if e else '—'} | {c('violations_suite')} | "
+            f"{c('bram')} | {(rr.get('area_source') or '—').split(' ')[0] if e else '—'} | "
+            f"{(rr.get('synth_status') or 'not run') if e else '—'} | {c('violations_suite')} | "
             f"{cell(p[0], 'violations_suite') if p else '—'} | {c('below_resolution_rays')} | {worst_psnr(e, 'psnr_db')} | "
             f"{worst_psnr(e, 'psnr_primary_db')} | {worst_psnr(p, 'psnr_primary_db')} |")
     add("")
@@ -823,26 +868,35 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
     # per scene
     add("## Per width and scene\n")
     add(f"Speed columns: the RTL at {r0['sim_size']} and its projection to {frame}"
-        + (" at Fmax." if have_synth else f"; *fps* at a nominal {nominal:g} MHz (no Fmax measured).") + "\n")
-    add("| scene | BITS | method | pixel latency | cycles/pixel | rays/pixel | fps | Verilator s | matched | "
+        + (" at the width's Fmax (*fps*, *ms/frame*); * marks a nominal "
+           f"{nominal:g} MHz where no Fmax was measured." if have_synth else
+           f"; *fps* and *ms/frame* at a nominal {nominal:g} MHz (no Fmax measured).") + "\n")
+    starred = False
+    add("| scene | BITS | method | pixel latency | cycles/pixel | rays/pixel | fps | ms/frame | Verilator s | matched | "
         "PSNR dB full | differ % full | max error full | PSNR dB primary | differ % primary | violations (scene) |")
-    add("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    add("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for s in scenes:
         for r in sorted([r for r in rows if r["scene"] == s], key=lambda r: (int(r["bits"]), r["method"] != "exact")):
             if r["method"] == "exact":
-                fps = cell(r, "fps", 2) if num(r, "fps") else (
-                    f"{nominal * 1e6 / num(r, 'frame_cycles_proj'):.2f}*" if num(r, "frame_cycles_proj") else "—")
+                cyc = num(r, "frame_cycles_proj")
+                if num(r, "fps"):
+                    fps, ms = cell(r, "fps", 2), cell(r, "frame_ms", 1)
+                elif cyc:
+                    fps, ms = f"{nominal * 1e6 / cyc:.2f}*", f"{cyc / (nominal * 1e3):.1f}*"
+                    starred = True
+                else:
+                    fps, ms = "—", "—"
                 matched = (f"{cell(r, 'rtl_matched')}/{cell(r, 'rtl_pixels')}" if r.get("rtl_pixels") else "—")
-                rtl = [cell(r, "pixel_latency"), cell(r, "cycles_per_pixel", 1), cell(r, "rays_per_pixel", 2), fps,
+                rtl = [cell(r, "pixel_latency"), cell(r, "cycles_per_pixel", 1), cell(r, "rays_per_pixel", 2), fps, ms,
                        cell(r, "sim_wall_s", 1), matched]
             else:
-                rtl = ["n/a"] * 6
+                rtl = ["n/a"] * 7
             add(f"| {s} | {r['bits']} | {r['method']} | " + " | ".join(rtl) + " | "
                 f"{cell(r, 'psnr_db', 2)} | {cell(r, 'diff_share', 2, 100)} | {cell(r, 'max_channel_err')} | "
                 f"{cell(r, 'psnr_primary_db', 2)} | {cell(r, 'diff_share_primary', 2, 100)} | "
                 f"{cell(r, 'violations_scene') if r.get('violations_scene') != '' else '—'} |")
-    if not have_synth:
-        add(f"\n\\* at a nominal {nominal:g} MHz: RTL cycles only, no measured Fmax.")
+    if starred:
+        add(f"\n\\* at a nominal {nominal:g} MHz: RTL cycles only, no measured Fmax for this width.")
     add("")
 
     add("## Plots\n")
@@ -861,11 +915,16 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
         add("> **Not final.** The cost side has no synthesis figures yet (Fmax and area are empty in the CSV): "
             "the paragraph above weighs image quality against RTL cycles only. A marked place for the final "
             "paragraph is left in the source of this file.\n")
+    else:
+        add("<!-- LEAD: recommendation paragraph. Synthesis figures are in (area for the widths in the table, "
+            "Fmax where placed and routed); the paragraph above is generated from the CSV. Replace this comment "
+            "with the lead's paragraph. -->\n")
     return "\n".join(L) + "\n"
 
 
 def recommendation(rows, scenes, bits_all, exact, have_synth, have_area, fronts):
     """A paragraph written from the measured numbers: every figure in it is computed from the CSV."""
+    fronts, measured = fronts
     out = []
     def get(b, m, s, col):
         for r in rows:
@@ -969,14 +1028,33 @@ def recommendation(rows, scenes, bits_all, exact, have_synth, have_area, fronts)
         out.append("Thin shells (Fig. 9) leave " + ", ".join(f"{int(n)}" for _, n in br) + " rays below "
                    "resolution at " + ", ".join(str(b) for b, _ in br) + " bits: there the width, not the method, "
                    "decides which surface is hit.")
+    if have_area:
+        # area per width (the one synthesis configuration of each width) against the LFE5U-85F
+        cap = {"lut4": 83640, "ff": 83640, "mult18x18d": 156, "bram": 208}
+        names = {"lut4": "LUT4", "ff": "FF", "mult18x18d": "MULT18X18D", "bram": "DP16KD"}
+        parts = []
+        for b in ex_bits:
+            r = next((r for r in exact if int(r["bits"]) == b and num(r, "lut4") is not None), None)
+            if r is None:
+                continue
+            over = [f"{names[c]} {num(r, c):,.0f} > {cap[c]:,}" for c in cap if (num(r, c) or 0) > cap[c]]
+            f = num(r, "fmax_mhz")
+            parts.append(f"{b} bits {num(r, 'lut4'):,.0f} LUT4, {num(r, 'mult18x18d'):.0f} MULT18X18D: "
+                         + (f"does not fit ({', '.join(over)})" if over else
+                            f"routed at {f:.1f} MHz" if f else "fits by yosys's count (not placed and routed)"))
+        if parts:
+            cfg = next((r["synth_config"] for r in exact if r.get("synth_config")), "").replace(" yosys only", "")
+            out.append(f"Area on the LFE5U-85F ({cfg}): " + "; ".join(parts) + ".")
     if have_synth:
-        out.append("Fmax and area: see the per-width table; frame times in the Pareto plot are at each width's Fmax.")
+        out.append("Frame times in the fps and Pareto plots are at each width's Fmax; widths without a "
+                   "measured Fmax are left out of them.")
     # advice, from the figures above
     if good:
         lo = good[0]
         best_v = min(ve, key=lambda x: (x[1], x[0]))[0] if ve else None
         best_br = min(br, key=lambda x: (x[1], x[0])) if br else None
-        dominated = sorted({b for b in ex_bits} - {p[2] for f in fronts.values() for p in f})
+        on_plot = {p[2] for pts in measured.values() for p in pts}
+        dominated = sorted(on_plot - {p[2] for f in fronts.values() for p in f})
         final = (f"take {ident[0]} bits, where every scene equals the double reference" if ident else
                  f"take {knee} bits: wider widths barely change the images" if knee is not None and knee > lo else
                  f"take the widest measured width, {ex_bits[-1]} bits (highest PSNR)")
@@ -992,7 +1070,9 @@ def recommendation(rows, scenes, bits_all, exact, have_synth, have_area, fronts)
                       if best_v is not None else "see the violations column")
                    + ". " + ("Widths on no scene's Pareto front (time against error) are dominated: "
                              + ", ".join(map(str, dominated)) + "." if dominated else
-                             "Every width is on some scene's Pareto front."))
+                             "Every width is on some scene's Pareto front." if on_plot >= set(ex_bits) else
+                             "Every width with a frame time (" + ", ".join(map(str, sorted(on_plot)))
+                             + " bits) is on some scene's Pareto front." if on_plot else ""))
         if not (have_synth and have_area):
             out.append("Without Fmax and area figures the cost of a width is not yet known: the choice between "
                        "the widths that look right is the synthesis's to make.")
@@ -1019,7 +1099,7 @@ def main():
     ap.add_argument("--no-synth", action="store_true", help="leave the synthesis columns empty")
     ap.add_argument("--synth-tree-height", type=int, default=8, help="csgrt_top's TREE_HEIGHT for synthesis")
     ap.add_argument("--synth-effects", default="auto",
-                    help="effect units of the synthesised core (synth.sh --effects none|shadows|reflection|all); "
+                    help="effect units of the synthesised core (synth.sh --effects none|shadows|reflection|refraction|all); "
                          "auto: all, as the simulation builds, when synth.sh has --effects, else none")
     ap.add_argument("--synth-freq", type=float, default=100, help="requested clock, MHz (synth.sh --freq)")
     ap.add_argument("--synth-args", default="", help="more tools/synth.sh arguments")

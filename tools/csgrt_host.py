@@ -73,9 +73,9 @@ def identify(port, timeout):
     r = read_exact(port, 6, timeout, "the identify reply")
     if r[0] != 0xA5 or r[1] != ord("I"):
         raise RuntimeError(f"unexpected identify reply {r.hex()}: is the csgrt bitstream loaded?")
-    # r[5]: the effect units the bitstream has (bit 0 shadows, bit 1 reflection)
+    # r[5]: the effect units the bitstream has (bit 0 shadows, bit 1 reflection, bit 2 refraction)
     return {"bits": r[2], "max_leaves": r[3], "tree_height": r[4],
-            "shadows": bool(r[5] & 1), "reflection": bool(r[5] & 2)}
+            "shadows": bool(r[5] & 1), "reflection": bool(r[5] & 2), "refraction": bool(r[5] & 4)}
 
 
 def render(port, image, ties="paper", timeout=5.0, quiet=False):
@@ -129,7 +129,8 @@ def main():
     port.reset_input_buffer()
     ident = identify(port, a.timeout)
     print(f"board: BITS={ident['bits']}, MAX_LEAVES={ident['max_leaves']}, TREE_HEIGHT={ident['tree_height']}, "
-          f"shadows {'yes' if ident['shadows'] else 'no'}, reflection {'yes' if ident['reflection'] else 'no'}")
+          f"shadows {'yes' if ident['shadows'] else 'no'}, reflection {'yes' if ident['reflection'] else 'no'}, "
+          f"refraction {'yes' if ident['refraction'] else 'no'}")
     if a.scene.endswith(".pov"):
         with tempfile.TemporaryDirectory() as d:
             binf = os.path.join(d, "scene.bin")

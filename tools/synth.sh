@@ -3,7 +3,7 @@
 # synth_ecp5, nextpnr-ecp5 place and route, ecppack bitstream (docs/fpga.md).
 #
 #   tools/synth.sh [--bits 24] [--freq 100] [--baud 3000000] [--out out/synth]
-#                  [--tree-height 8] [--max-leaves 64] [--effects none|shadows|reflection|all]
+#                  [--tree-height 8] [--max-leaves 64] [--effects none|shadows|reflection|refraction|all]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #
 # --per-module: area only, no place and route: synth_ecp5 -noflatten and a
@@ -37,7 +37,7 @@ while [ $# -gt 0 ]; do
         --baud) BAUD=$2; shift 2 ;;
         --tree-height) TREE_HEIGHT=$2; shift 2 ;;   # csgrt_top's TREE_HEIGHT (scenes: csgrt compile --tree-height)
         --max-leaves) MAX_LEAVES=$2; shift 2 ;;
-        --effects) EFFECTS=$2; shift 2 ;;          # csgrt_top's effect units (SHADOWS, REFLECTION)
+        --effects) EFFECTS=$2; shift 2 ;;          # csgrt_top's effect units (SHADOWS, REFLECTION, REFRACTION)
         --per-module) PER_MODULE=1; shift ;;
         --out) OUT=$2; shift 2 ;;
         --allow-timing-fail) ALLOW_FAIL=1; shift ;;
@@ -47,11 +47,12 @@ while [ $# -gt 0 ]; do
     esac
 done
 case "$EFFECTS" in
-    none) SHADOWS=0 REFLECTION=0 ;;
-    shadows) SHADOWS=1 REFLECTION=0 ;;
-    reflection) SHADOWS=0 REFLECTION=1 ;;
-    all) SHADOWS=1 REFLECTION=1 ;;
-    *) echo "synth.sh: --effects none|shadows|reflection|all, not $EFFECTS" >&2; exit 1 ;;
+    none) SHADOWS=0 REFLECTION=0 REFRACTION=0 ;;
+    shadows) SHADOWS=1 REFLECTION=0 REFRACTION=0 ;;
+    reflection) SHADOWS=0 REFLECTION=1 REFRACTION=0 ;;
+    refraction) SHADOWS=0 REFLECTION=0 REFRACTION=1 ;;
+    all) SHADOWS=1 REFLECTION=1 REFRACTION=1 ;;
+    *) echo "synth.sh: --effects none|shadows|reflection|refraction|all, not $EFFECTS" >&2; exit 1 ;;
 esac
 mkdir -p "$OUT"
 
@@ -87,7 +88,7 @@ LPF
 # SYNTH_CORE_SRC: other core sources (a test hook: a stub csgrt_top checks the flow in a minute)
 SRC="${SYNTH_CORE_SRC:-$(echo rtl/*.v)} rtl/board/csgrt_uart_rx.v rtl/board/csgrt_uart_tx.v rtl/board/csgrt_board_ctrl.v rtl/board/ulx3s/csgrt_ulx3s.v"
 T0=$(date +%s)
-PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION
+PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION
         -set CLK_HZ $CLK_HZ -set PLL_CLKI_DIV $CLKI_DIV -set PLL_CLKFB_DIV $CLKFB_DIV
         -set PLL_CLKOP_DIV $CLKOP_DIV -set PLL_CLKOP_CPHASE $CLKOP_CPHASE -set UART_DIV $UART_DIV"
 PARAMS=$(echo $PARAMS)   # one line for yosys
