@@ -916,9 +916,13 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
             "the paragraph above weighs image quality against RTL cycles only. A marked place for the final "
             "paragraph is left in the source of this file.\n")
     else:
-        add("<!-- LEAD: recommendation paragraph. Synthesis figures are in (area for the widths in the table, "
-            "Fmax where placed and routed); the paragraph above is generated from the CSV. Replace this comment "
-            "with the lead's paragraph. -->\n")
+        # the maintainers' recommendation, written by hand from the figures
+        # above (docs/accuracy/recommendation.md), kept across regenerations
+        rec = os.path.join(ROOT, "docs", "accuracy", "recommendation.md")
+        if os.path.exists(rec):
+            add(open(rec).read().strip() + "\n")
+        else:
+            add("<!-- LEAD: recommendation paragraph (docs/accuracy/recommendation.md). -->\n")
     return "\n".join(L) + "\n"
 
 
