@@ -349,7 +349,9 @@ module csgrt_walker #(
     wire         pend_same = t_t == pend_t_q;
     wire         pend_surf = obs && pend_same && pb_surf_q;            // t_later: same t, after the hit
     wire         p_out    = obs && (pend_surf || !pend_same || t_last);
-    wire         w_park   = w_out && w_hit && !w_dec;                  // the walk's hit waits
+    // the walk's hit waits (never on the ray's last token: its group ends
+    // there, and the next token at the output is another ray's)
+    wire         w_park   = w_out && w_hit && !w_dec;
     assign res     = (w_out && !w_park) || p_out;
     assign fin_hit = (w_out && w_hit && !w_park) || p_out;
     wire [OW-1:0] rec_out = p_out ? pend_rec_q : w_rec;
@@ -471,7 +473,7 @@ module csgrt_walker #(
                 wire              run_dec   = !same_t || found_now || t_last;
                 assign w_out    = run_out || out_hit || out_miss;
                 assign w_hit    = run_out || out_hit;
-                assign w_dec    = run_out ? run_dec : grp_found;
+                assign w_dec    = run_out ? run_dec : (grp_found || t_last);
                 assign w_sleaf  = run_out ? (found_now ? found_leaf : la_leaf_q) : grp_leaf;
                 assign w_t      = run_out ? la_t_q : t_t;
                 assign la_stall = need_q;
@@ -527,7 +529,7 @@ module csgrt_walker #(
             end else begin : g_no_la
                 assign w_out    = res_hit || res_miss;
                 assign w_hit    = res_hit;
-                assign w_dec    = grp_found;
+                assign w_dec    = grp_found || t_last;
                 assign w_sleaf  = grp_leaf;
                 assign w_t      = t_t;
                 assign la_stall = 1'b0;
@@ -546,7 +548,7 @@ module csgrt_walker #(
             assign w_rec         = rec_base;
             assign w_out         = res_hit || res_miss;
             assign w_hit         = res_hit;
-            assign w_dec         = grp_found;
+            assign w_dec         = grp_found || t_last;
             assign w_sleaf       = grp_leaf;
             assign w_t           = t_t;
             assign la_stall      = 1'b0;
