@@ -100,9 +100,7 @@ endef
 
 # the frame testbench: whole frames at 16 and 24 bits against the model, and
 # with two intersection lanes
-# frame24u2 (two lanes) is out of make test: csgrt_top refuses NUM_UNITS > 1 for now
-# (two lanes hang with the walker's tie-group logic; docs/architecture.md)
-FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 \
+FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 $(BUILD)/tb/frame24u2 \
               $(BUILD)/tb/frame16fx $(BUILD)/tb/frame24fx
 FRAME_DEPS := $(RTL_SRC) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a
 $(BUILD)/tb/frame%: $(FRAME_DEPS) | deps

@@ -17,7 +17,8 @@
 //
 // Latency: a candidate's pairs are valid 1 clock after its memory read.
 // Handshake: valid/ready everywhere. The pair registers advance together
-// when every lane holding a pair takes it; pair_ready_i must come from
+// when every lane holding a pair has taken it (a lane that takes its pair
+// early sees its valid drop until then); pair_ready_i must come from
 // registers (csgrt_isect's ready does), so no combinational path crosses a
 // lane.
 module csgrt_dispatch #(
@@ -149,7 +150,10 @@ module csgrt_dispatch #(
             fill_done_q  <= 1'b0;
             iss_lanes_q  <= {NUM_UNITS{1'b0}};
         end else begin
+            // a lane that took its pair holds no pair until the others
+            // have taken theirs (else it would take the same pair again)
             if (advance) pair_valid_o <= cand_valid ? iss_lanes_q : {NUM_UNITS{1'b0}};
+            else         pair_valid_o <= pair_valid_o & ~pair_ready_i;
             if (launch) begin
                 iss_od_q     <= fill_od_q;
                 iss_lanes_q  <= fill_lanes;

@@ -533,16 +533,6 @@ module csgrt_top #(
         end
     endgenerate
 
-    generate
-        if (NUM_UNITS > 1) begin : g_bad_param
-            // Two lanes hang since the walker's tie-group logic (52b490a):
-            // refused with a clear message until that is found and fixed.
-            initial begin
-                $display("ERROR %m: NUM_UNITS > 1 is refused for now (two lanes hang with the walker's tie-group logic)");
-                $finish;
-            end
-        end
-    endgenerate
 
     // ---------------------------------------------------- frame and statistics
     reg [63:0] pairs_now;   // pairs handed to the lanes in this clock

@@ -44,7 +44,7 @@ const char* kBuildUnits = !kEffects ? "no effect units"
 
 const char* kUsage =
     "usage: csgrt_sim --scene-image SCENE.bin --out OUT.png [--ties paper|regular] [--trace OUT.fst]\n"
-    "                 [--ready-percent P] [--no-compare]\n";
+    "                 [--ready-percent P] [--no-compare] [--max-cycles N]\n";
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
     TiePolicy ties = TiePolicy::Paper;
     int ready_percent = 100;
     bool compare = true;
+    uint64_t max_cycles = 0;   // 0: the default limit (100,000 cycles per pixel)
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&]() -> std::string {
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
         else if (a == "--trace") trace_path = next();
         else if (a == "--ready-percent") ready_percent = std::atoi(next().c_str());
         else if (a == "--no-compare") compare = false;
+        else if (a == "--max-cycles") max_cycles = std::strtoull(next().c_str(), nullptr, 10);
         else if (a == "--ties") {
             const std::string v = next();
             if (v == "paper") ties = TiePolicy::Paper;
@@ -147,7 +149,7 @@ int main(int argc, char** argv) {
             if (row % 4 == 3 || row == H - 1)
                 std::fprintf(stderr, "\rsim: row %d/%d, %.1f s", row + 1, H, seconds_since(t0));
         },
-        st, uint64_t(W) * H * 100000);
+        st, max_cycles ? max_cycles : uint64_t(W) * H * 100000);
     st.wall_seconds = seconds_since(t0);
     std::fprintf(stderr, "\n");
     if (!ok) {

@@ -45,7 +45,7 @@ std::vector<uint32_t> compile_words(const Scene& s, int w, int h) {
 }
 
 struct FrameResult {
-    size_t pixels = 0, matched = 0;
+    size_t pixels = 0, matched = 0, leaves = 0;
     bool in_order = true, completed = false;
     std::string report;
     csgrt_sim::SimStats stats;
@@ -62,6 +62,7 @@ FrameResult run_frame(const std::vector<uint32_t>& words, TiePolicy ties, int re
     sim.reset();
     sim.set_logging(!kEffects);
     FrameResult r;
+    r.leaves = cs.leaves.size();
     if (sim.load(words) != 0) {
         r.report = "the RTL refused the scene image";
         return r;
@@ -100,6 +101,9 @@ void expect_pixel_exact(const std::string& name, const Scene& scene, int w, int 
     EXPECT_TRUE(r.in_order) << name << ": pixels out of raster order";
     EXPECT_EQ(r.pixels, n) << name << ": pixels lost or duplicated";
     EXPECT_EQ(r.matched, n) << name << "\n" << r.report;
+    // primary rays only: every ray meets every leaf exactly once, in every
+    // lane (a lane that took a pair twice was the two-lane hang)
+    if (!kEffects) EXPECT_EQ(r.stats.pairs, n * r.leaves) << name << ": pairs lost or duplicated";
 }
 
 const char* kCoincident =
