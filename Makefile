@@ -153,17 +153,19 @@ synth: deps
 	@tools/synth.sh --bits $(BITS) --effects $(if $(filter scene,$(EFFECTS)),none,$(EFFECTS)) \
 	    --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
 
-# the board top in Verilator with a UART model (tb/board/): the PLL replaced
-# by tb/board/EHXPLLL.v, BOARD_UART_DIV clocks per UART bit
+# the board top in Verilator with a UART model (tb/board/), built as the
+# FPGA build is (CSGRT_ECP5_DSP: csgrt_mul in MULT18X18D tiles): the ECP5
+# primitives replaced by the models in tb/ecp5/ (EHXPLLL, MULT18X18D),
+# BOARD_UART_DIV clocks per UART bit
 BOARD_BITS     := 24
 BOARD_UART_DIV := 4
 BOARD_IDLE     := 2000
 BOARD_BIN      := $(BUILD)/tb/board
-BOARD_SRC      := $(wildcard rtl/board/*.v rtl/board/ulx3s/*.v) tb/board/EHXPLLL.v
+BOARD_SRC      := $(wildcard rtl/board/*.v rtl/board/ulx3s/*.v tb/ecp5/*.v)
 $(BOARD_BIN): $(RTL_SRC) $(BOARD_SRC) tb/board/tb_board.cpp $(BUILD)/libcsgrt.a | deps
 	@mkdir -p $@.obj
 	@echo "verilator: building csgrt_ulx3s BITS=$(BOARD_BITS) for $(notdir $@)"
-	@verilator --cc --exe --build -O3 -j 2 -Wall -y rtl -y rtl/board -y rtl/board/ulx3s -y tb/board \
+	@verilator --cc --exe --build -O3 -j 2 -Wall -DCSGRT_ECP5_DSP -y rtl -y rtl/board -y rtl/board/ulx3s -y tb/ecp5 \
 	    --top-module csgrt_ulx3s -GBITS=$(BOARD_BITS) -GUART_DIV=$(BOARD_UART_DIV) -GIDLE_CLOCKS=$(BOARD_IDLE) \
 	    -MAKEFLAGS OPT_FAST=-O2 -MAKEFLAGS OPT_SLOW=-O1 -MAKEFLAGS OPT_GLOBAL=-O2 \
 	    -CFLAGS "-std=c++17 -O2 -I$(CURDIR)/model -DBOARD_BITS=$(BOARD_BITS) -DBOARD_UART_DIV=$(BOARD_UART_DIV) -DBOARD_IDLE_CLOCKS=$(BOARD_IDLE)" \

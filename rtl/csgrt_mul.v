@@ -1,8 +1,24 @@
 `default_nettype none
 // csgrt_mul — registered signed multiplier, p = a * b (full A_WIDTH+B_WIDTH
-// bit product, two's complement), meant to map onto ECP5 MULT18X18D blocks
-// (yosys mul2dsp splits operands wider than 18 bits over several blocks; the
-// input and output registers become the block's REG_INPUT/REG_OUTPUT).
+// bit product, two's complement).
+//
+// Two implementations of the same function and latency:
+//  * behavioural (default): input register, `*`, output register. Yosys
+//    maps the `*` through mul2dsp onto MULT18X18D blocks but leaves both
+//    registers in the fabric (synth_ecp5 absorbs none into the block).
+//  * CSGRT_ECP5_DSP (tools/synth.sh and the board bench define it): the
+//    product is cut into tiles of 18-bit operand chunks (the top chunk of an
+//    operand signed, the others unsigned 18-bit), each tile one MULT18X18D
+//    with its input and output registers inside (csgrt_mul_dsp), or, when
+//    the tile is small (chunk widths' product <= LUT_TILE_MAX = 36, i.e. the
+//    6 x 6 top corner of a 24 x 24 product), shift-and-add rows in the fabric
+//    between the same two registers. p_o is the sum of the shifted tiles: the registered
+//    product itself for a one-tile product; for a wider one an adder after
+//    the tiles' output registers (the consumer's stage sees that adder).
+//    A 24 x 24 product takes 3 blocks (mul2dsp: 4); a 16 x 16 one 1 block
+//    and no fabric register at all (mul2dsp: 1 block, 64 FF around it).
+//    Simulation uses tb/ecp5/MULT18X18D.v for the block; tb/mul checks both
+//    implementations against each other and the exact product.
 //
 // Latency: 2 clocks (input register, output register), counted in enabled
 // clocks: every register, valid included, only moves when ce_i is high.
@@ -25,7 +41,20 @@ module csgrt_mul #(
 
     localparam P_WIDTH = A_WIDTH + B_WIDTH;   // exact signed product width
 
-    reg               valid_q, valid_q2;
+    reg valid_q, valid_q2;
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            valid_q  <= 1'b0;
+            valid_q2 <= 1'b0;
+        end else if (ce_i) begin
+            valid_q  <= valid_i;
+            valid_q2 <= valid_q;
+        end
+    end
+    assign valid_o = valid_q2;
+
+`ifndef CSGRT_ECP5_DSP
+    // ---- behavioural
     reg [A_WIDTH-1:0] a_q;
     reg [B_WIDTH-1:0] b_q;
     reg [P_WIDTH-1:0] p_q;
@@ -38,22 +67,106 @@ module csgrt_mul #(
     assign p_d = $signed(a_q) * $signed(b_q);
 
     always @(posedge clk_i) begin
-        if (!rst_ni) begin
-            valid_q  <= 1'b0;
-            valid_q2 <= 1'b0;
-        end else if (ce_i) begin
-            valid_q  <= valid_i;
-            valid_q2 <= valid_q;
-        end
         if (ce_i) begin
             a_q <= a_i;
             b_q <= b_i;
             p_q <= p_d;
         end
     end
+    assign p_o = p_q;
+`else
+    // ---- ECP5: tiles of 18-bit chunks
+    // Operand x of width W is sum_k x_k 2^(18k), chunk k < N-1 unsigned 18
+    // bits, the top chunk N-1 signed, W - 18(N-1) bits (1..18). A tile
+    // (i, j) is a_i b_j shifted by 18(i+j); its exact value fits P_WIDTH
+    // sign-extended, and the tiles' sum modulo 2^P_WIDTH is the product.
+    localparam NA = (A_WIDTH + 17) / 18;
+    localparam NB = (B_WIDTH + 17) / 18;
+    localparam LUT_TILE_MAX = 36;   // chunk widths' product at or below (6 x 6): fabric tile
 
-    assign valid_o = valid_q2;
-    assign p_o     = p_q;
+    wire [NA*NB*P_WIDTH-1:0] tile;   // each tile's value, extended and shifted
+    genvar i, j;
+    generate
+        for (i = 0; i < NA; i = i + 1) begin : g_a
+            for (j = 0; j < NB; j = j + 1) begin : g_b
+                localparam WA = (i == NA - 1) ? A_WIDTH - 18 * (NA - 1) : 18;
+                localparam WB = (j == NB - 1) ? B_WIDTH - 18 * (NB - 1) : 18;
+                localparam SA = (i == NA - 1);   // top chunks are signed
+                localparam SB = (j == NB - 1);
+                localparam SH = 18 * (i + j);
+                wire [WA-1:0] a_c = a_i[18*i +: WA];
+                wire [WB-1:0] b_c = b_i[18*j +: WB];
+                // the chunks as WA+1 / WB+1 bit signed numbers
+                wire [WA:0] a_x = {SA ? a_c[WA-1] : 1'b0, a_c};
+                wire [WB:0] b_x = {SB ? b_c[WB-1] : 1'b0, b_c};
+                wire [WA+WB+1:0] v;              // the tile's exact value, signed
+                if (WA * WB <= LUT_TILE_MAX) begin : g_lut
+                    // fabric tile, written as shifted rows of the wider
+                    // chunk, one per bit of the narrower one, the sign bit's
+                    // row subtracted: yosys sees adders, not a `*` it would
+                    // put in a block after all
+                    localparam VW = WA + WB + 2;
+                    localparam WN = (WA < WB) ? WA : WB;   // the narrower chunk
+                    localparam WW = WA + WB - WN;          // the wider one
+                    reg [WW:0]    w_q;
+                    reg [WN:0]    n_q;
+                    reg [VW-1:0]  p_q, rows;
+                    wire [VW-1:0] w_e = {{(WN+1){w_q[WW]}}, w_q};
+                    integer r;
+                    always @* begin
+                        rows = {VW{1'b0}};
+                        for (r = 0; r < WN; r = r + 1) rows = rows + ((w_e << r) & {VW{n_q[r]}});
+                        rows = rows - ((w_e << WN) & {VW{n_q[WN]}});
+                    end
+                    wire [WW:0] w_x;
+                    wire [WN:0] n_x;
+                    if (WA < WB) begin : g_b_wide
+                        assign w_x = b_x;
+                        assign n_x = a_x;
+                    end else begin : g_a_wide
+                        assign w_x = a_x;
+                        assign n_x = b_x;
+                    end
+                    always @(posedge clk_i)
+                        if (ce_i) begin
+                            w_q <= w_x;
+                            n_q <= n_x;
+                            p_q <= rows;
+                        end
+                    assign v = p_q;
+                end else begin : g_dsp
+                    // the chunks extended to the block's 18 bits (a signed
+                    // chunk by its sign, an unsigned one is 18 bits already)
+                    wire [35:0] a_w = {{(35-WA){a_x[WA]}}, a_x};
+                    wire [35:0] b_w = {{(35-WB){b_x[WB]}}, b_x};
+                    wire [35:0] p;
+                    csgrt_mul_dsp #(.A_SIGNED(SA ? 1 : 0), .B_SIGNED(SB ? 1 : 0)) u_dsp (
+                        .clk_i, .ce_i, .a_i (a_w[17:0]), .b_i (b_w[17:0]), .p_o (p));
+                    // the 36-bit product, extended as signed when either
+                    // operand is (else it is unsigned); WA+WB+2 <= 38 bits
+                    wire [37:0] p_x = {{2{(SA || SB) && p[35]}}, p};
+                    assign v = p_x[WA+WB+1:0];
+                    wire unused_w = ^{a_w[35:18], b_w[35:18]};
+                    if (WA + WB + 2 < 38) begin : g_unused_top
+                        wire unused_top = ^p_x[37:WA+WB+2];
+                    end
+                end
+                // extended to P_WIDTH, shifted into place
+                wire [P_WIDTH+WA+WB+1:0] v_x = {{P_WIDTH{v[WA+WB+1]}}, v};
+                assign tile[(i*NB+j)*P_WIDTH +: P_WIDTH] = v_x[P_WIDTH-1:0] << SH;
+                wire unused_vx = ^v_x[P_WIDTH+WA+WB+1:P_WIDTH];   // beyond the product's width
+            end
+        end
+    endgenerate
+
+    reg [P_WIDTH-1:0] sum;
+    integer t;
+    always @* begin
+        sum = {P_WIDTH{1'b0}};
+        for (t = 0; t < NA * NB; t = t + 1) sum = sum + tile[t*P_WIDTH +: P_WIDTH];
+    end
+    assign p_o = sum;
+`endif
 
     generate
         if (A_WIDTH < 2 || B_WIDTH < 2) begin : g_bad_width

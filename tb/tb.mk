@@ -13,8 +13,11 @@ BUILD        ?= build
 VERILATOR    ?= verilator
 YOSYS        ?= yosys
 TB_NAMES     := sqrt div isect camera shade
-TB_NAMES     += class_node class_tree walk spawn quadric_at
+TB_NAMES     += class_node class_tree walk spawn quadric_at mul
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
+# the multiplier bench once more as the FPGA build maps csgrt_mul (MULT18X18D tiles)
+TB_BINS      += $(BUILD)/tb/mul_ecp5
+ECP5_MODELS  := $(wildcard tb/ecp5/*.v)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_COMMON    := $(wildcard tb/common/*.h)
 TB_VFLAGS    := --cc --exe --build -Wall -O3 -j 2 -y rtl \
@@ -53,6 +56,12 @@ $(BUILD)/tb/$(1): tb/$(1)/tb_$(1).v tb/$(1)/tb_$(1).cpp $(TB_RTL) $(TB_COMMON) $
 endef
 $(foreach t,$(TB_NAMES),$(eval $(call TB_RULE,$(t))))
 
+$(BUILD)/tb/mul_ecp5: tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_COMMON) $(ECP5_MODELS)
+	@mkdir -p $(BUILD)/tb/mul_ecp5.obj
+	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP --Mdir $(BUILD)/tb/mul_ecp5.obj --top-module tb_mul \
+	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
+	    -o $(CURDIR)/$(BUILD)/tb/mul_ecp5 $(CURDIR)/tb/mul/tb_mul.v $(CURDIR)/tb/mul/tb_mul.cpp
+
 .PHONY: tb lint-rtl
 tb: $(TB_BINS)
 
@@ -70,11 +79,16 @@ LINT_SPAWN_FX := "-GREFRACTION=0" "-GREFLECTION=0 -GREFRACTION=0" "-GREFLECTION=
 lint-rtl:
 	@set -e; for m in $(LINT_MODULES); do \
 	    echo "verilator lint $$m"; \
-	    $(VERILATOR) --lint-only -Wall -y rtl --top-module $$m rtl/$$m.v; \
+	    $(VERILATOR) --lint-only -Wall -y rtl -y tb/ecp5 --top-module $$m rtl/$$m.v; \
 	done; \
 	for b in $(LINT_TOP_BITS); do \
 	    echo "verilator lint csgrt_top BITS=$$b"; \
 	    $(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GBITS=$$b rtl/csgrt_top.v; \
+	done; \
+	for b in $(LINT_TOP_BITS); do \
+	    echo "verilator lint csgrt_top BITS=$$b CSGRT_ECP5_DSP (MULT18X18D tiles)"; \
+	    $(VERILATOR) --lint-only -Wall -DCSGRT_ECP5_DSP -y rtl -y tb/ecp5 --top-module csgrt_top -GBITS=$$b \
+	        -GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1 rtl/csgrt_top.v; \
 	done; \
 	echo "verilator lint csgrt_top NUM_UNITS=2"; \
 	$(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GNUM_UNITS=2 rtl/csgrt_top.v; \

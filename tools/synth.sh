@@ -5,6 +5,12 @@
 #   tools/synth.sh [--bits 24] [--freq 100] [--baud 3000000] [--out out/synth]
 #                  [--tree-height 8] [--max-leaves 64] [--effects none|shadows|reflection|refraction|all]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
+#                  [--behavioural-mul]
+#
+# Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
+# with their input and output registers inside the block (rtl/csgrt_mul.v);
+# --behavioural-mul leaves the `*` to yosys's mul2dsp instead (registers in
+# the fabric), for comparison.
 #
 # --per-module: area only, no place and route: synth_ecp5 -noflatten and a
 # table of LUT4 / FF / MULT18X18D / BRAM per module instance
@@ -29,7 +35,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
-EFFECTS=none PER_MODULE=0
+EFFECTS=none PER_MODULE=0 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
@@ -39,6 +45,7 @@ while [ $# -gt 0 ]; do
         --max-leaves) MAX_LEAVES=$2; shift 2 ;;
         --effects) EFFECTS=$2; shift 2 ;;          # csgrt_top's effect units (SHADOWS, REFLECTION, REFRACTION)
         --per-module) PER_MODULE=1; shift ;;
+        --behavioural-mul) DEFS="-DSYNTHESIS"; shift ;;
         --out) OUT=$2; shift 2 ;;
         --allow-timing-fail) ALLOW_FAIL=1; shift ;;
         --stop-after-synth) STOP_SYNTH=1; shift ;;
@@ -95,7 +102,7 @@ PARAMS=$(echo $PARAMS)   # one line for yosys
 if [ "$PER_MODULE" = 1 ]; then
     echo "synth: yosys synth_ecp5 -noflatten, area per module (log $OUT/yosys_hier.log)"
     "$YOSYS" -l "$OUT/yosys_hier.log" -q -p "
-        read_verilog -DSYNTHESIS $SRC
+        read_verilog $DEFS $SRC
         chparam $PARAMS csgrt_ulx3s
         synth_ecp5 -noflatten -top csgrt_ulx3s -json $OUT/csgrt_hier.json
         tee -o $OUT/yosys_stat_hier.txt stat
@@ -107,7 +114,7 @@ fi
 if [ "$SKIP_SYNTH" = 0 ]; then
 echo "synth: yosys synth_ecp5 (log $OUT/yosys.log)"
 "$YOSYS" -l "$OUT/yosys.log" -q -p "
-    read_verilog -DSYNTHESIS $SRC
+    read_verilog $DEFS $SRC
     chparam $PARAMS csgrt_ulx3s
     synth_ecp5 -top csgrt_ulx3s -json $OUT/csgrt.json
     tee -o $OUT/yosys_stat.txt stat

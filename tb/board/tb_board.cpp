@@ -1,10 +1,12 @@
 // tb_board.cpp — the ULX3S board top (rtl/board/ulx3s/csgrt_ulx3s.v) end to
 // end in Verilator: a bit-level UART model drives the FPGA's receive pin
 // (ftdi_txd) and decodes its transmit pin (ftdi_rxd); the PLL is the
-// behavioural tb/board/EHXPLLL.v (CLKOP = CLKI). The host protocol of
-// docs/fpga.md: identify, a scene image in, status, the pixels and the cycle
-// count out; each frame pixel for pixel against the golden model rendering
-// the very same image; a refused image and recovery after it.
+// behavioural tb/ecp5/EHXPLLL.v (CLKOP = CLKI), and csgrt_mul is built as
+// on the FPGA (CSGRT_ECP5_DSP: MULT18X18D tiles, modelled by
+// tb/ecp5/MULT18X18D.v). The host protocol of docs/fpga.md: identify, a
+// scene image in, status, the pixels and the cycle count out; each frame
+// pixel for pixel against the golden model rendering the very same image;
+// a refused image and recovery after it.
 // Built with -GUART_DIV=BOARD_UART_DIV (a few clocks per bit, so that a frame
 // takes seconds) and a short IDLE_CLOCKS.
 #include "Vcsgrt_ulx3s.h"
