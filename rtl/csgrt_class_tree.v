@@ -53,14 +53,19 @@ module csgrt_class_tree #(
     localparam MB = MAT_BITS;
     localparam CW = 2 * MB + 2;      // classification width
 
+    // The slot classes and the node classifications are arrays of CW-bit
+    // words, not one wide vector: Verilator then reads and writes each node
+    // as a word of its own (assembling a 2^H x CW vector from its pieces
+    // cost the simulation a quarter of its time at H = 8).
+
     // level 0: the slot classes
-    wire [NS*CW-1:0] leaf_c;
+    wire [CW-1:0] leaf_c [0:NS-1];
     genvar s, i;
     generate
         for (s = 0; s < NS; s = s + 1) begin : g_slot
             wire [MB-1:0] m = slot_mat_i[s*MB +: MB];
             wire          hit = (slot_i == s[H-1:0]);
-            assign leaf_c[s*CW +: CW] =
+            assign leaf_c[s] =
                 hit                          ? (entering_i ? {2'd2, {MB{1'b0}}, m} : {2'd2, m, {MB{1'b0}}}) :
                 (slot_used_i[s] && flags_i[s]) ? {2'd1, {MB{1'b0}}, m} :
                                                {CW{1'b0}};
@@ -68,23 +73,24 @@ module csgrt_class_tree #(
     endgenerate
 
     // node levels: node i (heap order) holds its classification in
-    // node_q[i*CW +: CW], registered; its children are nodes 2i, 2i+1 or,
-    // on the lowest level, the slot classes 2i-NS, 2i+1-NS
-    reg  [NS*CW-1:0] node_q;
-    wire [NS*CW-1:0] node_d;
-    assign node_d[CW-1:0] = {CW{1'b0}};   // position 0 unused
+    // node_q[i], registered; its children are nodes 2i, 2i+1 or, on the
+    // lowest level, the slot classes 2i-NS, 2i+1-NS
+    reg  [CW-1:0] node_q [1:NS-1];
+    wire [CW-1:0] node_d [1:NS-1];
     generate
         for (i = 1; i < NS; i = i + 1) begin : g_node
             wire [CW-1:0] l, r;
             if (2 * i >= NS) begin : g_low
-                assign l = leaf_c[(2*i-NS)*CW +: CW];
-                assign r = leaf_c[(2*i+1-NS)*CW +: CW];
+                assign l = leaf_c[2*i-NS];
+                assign r = leaf_c[2*i+1-NS];
             end else begin : g_up
-                assign l = node_q[(2*i)*CW +: CW];
-                assign r = node_q[(2*i+1)*CW +: CW];
+                assign l = node_q[2*i];
+                assign r = node_q[2*i+1];
             end
             csgrt_class_node #(.MAT_BITS(MB)) u_node (
-                .op_i(node_op_i[2*i +: 2]), .l_i(l), .r_i(r), .c_o(node_d[i*CW +: CW]));
+                .op_i(node_op_i[2*i +: 2]), .l_i(l), .r_i(r), .c_o(node_d[i]));
+            always @(posedge clk_i)
+                if (ce_i) node_q[i] <= node_d[i];
         end
         if (H < 1) begin : g_bad_param
             initial begin
@@ -94,17 +100,13 @@ module csgrt_class_tree #(
         end
     endgenerate
 
-    always @(posedge clk_i) begin
-        if (ce_i) node_q <= node_d;
-    end
-
     csgrt_delay #(.WIDTH(TAG_WIDTH), .STAGES(H)) u_tag (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i),
         .valid_i(valid_i), .data_i(tag_i), .valid_o(valid_o), .data_o(tag_o));
 
-    assign class_o = node_q[CW +: CW];
+    assign class_o = node_q[1];
 
-    wire unused_cfg = ^{node_op_i[1:0], node_q[CW-1:0]};
+    wire unused_cfg = ^node_op_i[1:0];
 
 endmodule
 

@@ -17,21 +17,29 @@ module csgrt_delay #(
     output wire [WIDTH-1:0] data_o
 );
 
-    reg [STAGES-1:0]       valid_q;
-    reg [STAGES*WIDTH-1:0] data_q;
+    // one word per stage (an array, not a flat STAGES x WIDTH vector, which
+    // the Verilator model would shift as a whole every clock)
+    reg [STAGES-1:0] valid_q;
+    reg [WIDTH-1:0]  data_q [0:STAGES-1];
 
+    genvar k;
     generate
         if (STAGES == 1) begin : g_one
             always @(posedge clk_i) begin
                 if (!rst_ni) valid_q <= 1'b0;
                 else if (ce_i) valid_q <= valid_i;
-                if (ce_i) data_q <= data_i;
             end
         end else begin : g_many
             always @(posedge clk_i) begin
                 if (!rst_ni) valid_q <= {STAGES{1'b0}};
                 else if (ce_i) valid_q <= {valid_q[STAGES-2:0], valid_i};
-                if (ce_i) data_q <= {data_q[(STAGES-1)*WIDTH-1:0], data_i};
+            end
+        end
+        for (k = 0; k < STAGES; k = k + 1) begin : g_stage
+            if (k == 0) begin : g_first
+                always @(posedge clk_i) if (ce_i) data_q[0] <= data_i;
+            end else begin : g_next
+                always @(posedge clk_i) if (ce_i) data_q[k] <= data_q[k-1];
             end
         end
         if (WIDTH < 1 || STAGES < 1) begin : g_bad_param
@@ -43,7 +51,7 @@ module csgrt_delay #(
     endgenerate
 
     assign valid_o = valid_q[STAGES-1];
-    assign data_o  = data_q[(STAGES-1)*WIDTH +: WIDTH];
+    assign data_o  = data_q[STAGES-1];
 
 endmodule
 

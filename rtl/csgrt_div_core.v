@@ -81,28 +81,40 @@ module csgrt_div_core #(
     // or LUT RAM on the FPGA rather than QB + 1 copies in flip-flops).
     localparam SW = DW + QB + 2;        // side word width
 
-    reg  [QB-1:0]    valid_q;
-    wire [QB-1:0]    valid_d;
-    reg  [QB*DW-1:0] rem_q;
-    wire [QB*DW-1:0] rem_d;
-    reg  [QB*QB-1:0] quot_q;
-    wire [QB*QB-1:0] quot_d;
-    reg  [QB*SW-1:0] side_q;
-    wire [QB*SW-1:0] side_d;
+    // Each stage's registers are words of their own (arrays, not one flat
+    // vector per kind): Verilator then moves each word by itself instead of
+    // shifting QB-word vectors every clock.
+    reg  [QB-1:0] valid_q;
+    reg  [DW-1:0] rem_q  [0:QB-1];
+    reg  [QB-1:0] quot_q [0:QB-1];
+    reg  [SW-1:0] side_q [0:QB-1];
 
-    wire [SW-1:0]    side0 = {s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
-    wire [QB-1:0]    valid_s = {valid_q[QB-2:0], s0_valid_q};
-    wire [QB*DW-1:0] rem_s   = {rem_q[(QB-1)*DW-1:0], s0_rem_q};
-    wire [QB*QB-1:0] quot_s  = {quot_q[(QB-1)*QB-1:0], {QB{1'b0}}};
-    wire [QB*SW-1:0] side_s  = {side_q[(QB-1)*SW-1:0], side0};
+    wire [SW-1:0] side0 = {s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
+
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            valid_q <= {QB{1'b0}};
+        end else if (ce_i) begin
+            valid_q <= {valid_q[QB-2:0], s0_valid_q};
+        end
+    end
 
     genvar k;
     generate
         for (k = 0; k < QB; k = k + 1) begin : g_stage
             localparam I = QB - 1 - k;   // quotient bit found by this stage
-            wire [DW-1:0] rem_in  = rem_s[k*DW +: DW];
-            wire [QB-1:0] quot_in = quot_s[k*QB +: QB];
-            wire [SW-1:0] side_in = side_s[k*SW +: SW];
+            wire [DW-1:0] rem_in;
+            wire [QB-1:0] quot_in;
+            wire [SW-1:0] side_in;
+            if (k == 0) begin : g_first
+                assign rem_in  = s0_rem_q;
+                assign quot_in = {QB{1'b0}};
+                assign side_in = side0;
+            end else begin : g_next
+                assign rem_in  = rem_q[k-1];
+                assign quot_in = quot_q[k-1];
+                assign side_in = side_q[k-1];
+            end
             wire [DW-1:0] ud_in   = side_in[DW-1:0];
             wire [QB-1:0] lo_in   = side_in[DW +: QB];
             wire [DW:0]   rem_sh  = {rem_in, lo_in[I]};
@@ -113,29 +125,18 @@ module csgrt_div_core #(
             // quot_in < 2^k <= 2^(QB-1): its top bit is zero
             wire          unused_quot_top = quot_in[QB-1];
 
-            assign valid_d[k]          = valid_s[k];
-            assign rem_d[k*DW +: DW]   = rem_nx[DW-1:0];
-            assign quot_d[k*QB +: QB]  = {quot_in[QB-2:0], take};
-            assign side_d[k*SW +: SW]  = side_in;
+            always @(posedge clk_i)
+                if (ce_i) begin
+                    rem_q[k]  <= rem_nx[DW-1:0];
+                    quot_q[k] <= {quot_in[QB-2:0], take};
+                    side_q[k] <= side_in;
+                end
         end
     endgenerate
 
-    always @(posedge clk_i) begin
-        if (!rst_ni) begin
-            valid_q <= {QB{1'b0}};
-        end else if (ce_i) begin
-            valid_q <= valid_d;
-        end
-        if (ce_i) begin
-            rem_q  <= rem_d;
-            quot_q <= quot_d;
-            side_q <= side_d;
-        end
-    end
-
-    wire [SW-1:0] side_last = side_q[(QB-1)*SW +: SW];
+    wire [SW-1:0] side_last = side_q[QB-1];
     assign valid_o = valid_q[QB-1];
-    assign quot_o  = quot_q[(QB-1)*QB +: QB];
+    assign quot_o  = quot_q[QB-1];
     assign neg_o   = side_last[DW+QB];
     assign ovf_o   = side_last[DW+QB+1];
 
@@ -144,7 +145,7 @@ module csgrt_div_core #(
     );
 
     // the last stage's remainder, |d| and numerator bits are not needed
-    wire unused_last = ^{rem_q[(QB-1)*DW +: DW], side_last[DW+QB-1:0]};
+    wire unused_last = ^{rem_q[QB-1], side_last[DW+QB-1:0]};
 
     generate
         if (NUM_WIDTH <= QUOT_BITS || DEN_WIDTH < 2 || QUOT_BITS < 2 || USER_WIDTH < 1) begin : g_bad_param

@@ -170,12 +170,14 @@ module csgrt_event_sort #(
     reg [PAYLOAD_WIDTH-1:0] s1_pay_q;
 
     // ---- banks ------------------------------------------------------------
-    reg [N*DW-1:0]          fill_q;        // sorted, cells 0 .. fcnt-1 valid
+    // The banks are arrays of cells (one DW-bit word each), not flat N x DW
+    // vectors: the Verilator model then moves each cell as a word of its own.
+    reg [DW-1:0]            fill_q [0:N-1];   // sorted, cells 0 .. fcnt-1 valid
     reg [NB-1:0]            fcnt_q;
     reg                     full_q;        // fill bank holds a complete ray
     reg [NS-1:0]            fflags_q;
     reg [PAYLOAD_WIDTH-1:0] fpay_q;
-    reg [N*DW-1:0]          drain_q;       // sorted, cell 0 is the next event
+    reg [DW-1:0]            drain_q [0:N-1];  // sorted, cell 0 is the next event
     reg [NB-1:0]            dcnt_q;
     reg                     busy_q;        // drain bank holds a ray
     reg [NS-1:0]            dflags_q;
@@ -193,42 +195,56 @@ module csgrt_event_sort #(
     wire [KW-1:0] key_b = `CSGRT_KEY(s1_b_q);
     wire [N-1:0]  lt_a, lt_b;              // cell j holds an event before a / b
                                            // (a missing event counts as +infinity)
-    wire [N*DW-1:0] ins;
+    wire pop;                              // the walker takes the drain bank's cell 0
     genvar j;
     generate
         for (j = 0; j < N; j = j + 1) begin : g_cell
-            wire [DW-1:0] cur  = fill_q[j*DW +: DW];
+            wire [DW-1:0] cur  = fill_q[j];
             wire          here = j < base_cnt;
             wire [KW-1:0] k    = `CSGRT_KEY(cur);
+            wire [DW-1:0] ins;                 // the cell's next word
             assign lt_a[j] = here && (s1_n_q == 2'd0 || k < key_a);   // no event: a = +inf
             assign lt_b[j] = here && (s1_n_q != 2'd2 || k < key_b);
             if (j == 0) begin : g_first
-                assign ins[DW-1:0] = lt_a[0] ? cur : s1_a_q;
+                assign ins = lt_a[0] ? cur : s1_a_q;
             end else if (j == 1) begin : g_second
-                assign ins[DW +: DW] = lt_a[1] ? cur :
-                                       lt_a[0] ? s1_a_q :
-                                       lt_b[0] ? fill_q[0 +: DW] : s1_b_q;
+                assign ins = lt_a[1] ? cur :
+                             lt_a[0] ? s1_a_q :
+                             lt_b[0] ? fill_q[0] : s1_b_q;
             end else begin : g_rest
-                assign ins[j*DW +: DW] = lt_a[j]   ? cur :
-                                         lt_a[j-1] ? s1_a_q :
-                                         lt_b[j-1] ? fill_q[(j-1)*DW +: DW] :
-                                         lt_b[j-2] ? s1_b_q :
-                                                     fill_q[(j-2)*DW +: DW];
+                assign ins = lt_a[j]   ? cur :
+                             lt_a[j-1] ? s1_a_q :
+                             lt_b[j-1] ? fill_q[j-1] :
+                             lt_b[j-2] ? s1_b_q :
+                                         fill_q[j-2];
+            end
+            // the drain bank shifts towards cell 0 on a pop
+            wire [DW-1:0] next_drain;
+            if (j == N - 1) begin : g_end
+                assign next_drain = {DW{1'b0}};
+            end else begin : g_shift
+                assign next_drain = drain_q[j+1];
+            end
+            always @(posedge clk_i) begin
+                if (s1_adv) fill_q[j] <= ins;
+                if (handover) drain_q[j] <= fill_q[j];
+                else if (pop) drain_q[j] <= next_drain;
             end
         end
     endgenerate
 
     // ---- drain bank ----------------------------------------------------------
-    wire pop = ev_pop_i && busy_q && dcnt_q != {NB{1'b0}};
+    assign pop = ev_pop_i && busy_q && dcnt_q != {NB{1'b0}};
     assign ray_valid_o   = busy_q;
     assign ray_flags_o   = dflags_q;
     assign ray_payload_o = dpay_q;
     assign ev_valid_o    = busy_q && dcnt_q != {NB{1'b0}};
     assign ev_last_o     = dcnt_q == {{(NB-1){1'b0}}, 1'b1};
-    assign ev_t_o        = {1'b0, drain_q[DW-1 -: UW]};
-    assign ev_leaf_o     = drain_q[H+1 +: LB];
-    assign ev_slot_o     = drain_q[1 +: H];
-    assign ev_entering_o = drain_q[0];
+    wire [DW-1:0] head   = drain_q[0];
+    assign ev_t_o        = {1'b0, head[DW-1 -: UW]};
+    assign ev_leaf_o     = head[H+1 +: LB];
+    assign ev_slot_o     = head[1 +: H];
+    assign ev_entering_o = head[0];
 
     // ---- secondary rays: info stream, t limit, inherited flags, look-behind
     localparam LBK = LOOK_BEHIND;
@@ -317,7 +333,6 @@ module csgrt_event_sort #(
             fflags_q <= {NS{1'b0}};
         end
         if (s1_adv) begin
-            fill_q   <= ins;
             fcnt_q   <= base_cnt + {{(NB-2){1'b0}}, s1_n_q};
             fflags_q[s1_slot_q] <= s1_flag_q;
             if (s1_last_q) fpay_q <= s1_pay_q;
@@ -328,12 +343,10 @@ module csgrt_event_sort #(
             if (fix_we[fs]) fflags_q[fs] <= fix_val[fs];
         // drain bank
         if (handover) begin
-            drain_q  <= fill_q;
             dcnt_q   <= fcnt_q;
             dflags_q <= fflags_q;
             dpay_q   <= fpay_q;
         end else if (pop) begin
-            drain_q <= {{DW{1'b0}}, drain_q[N*DW-1:DW]};
             dcnt_q  <= dcnt_q - 1'b1;
         end
         if (!rst_ni) begin

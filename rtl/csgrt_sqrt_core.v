@@ -33,16 +33,21 @@ module csgrt_sqrt_core #(
     // shifted remainder 4*rem+3 < 2^(R+2) fits in R+2 bits at every stage.
     localparam RW = R + 2;
 
-    // Stage k reads the inputs (k = 0) or slice k-1 of the *_q registers
-    // and writes slice k of *_d / *_q.
-    reg  [R-1:0]          valid_q;
-    wire [R-1:0]          valid_d;
-    reg  [R*RW-1:0]       rem_q;
-    wire [R*RW-1:0]       rem_d;
-    reg  [R*R-1:0]        root_q;
-    wire [R*R-1:0]        root_d;
-    reg  [R*NW-1:0]       n_q;
-    wire [R*NW-1:0]       n_d;
+    // Stage k reads the inputs (k = 0) or the registers of stage k-1 and
+    // writes its own; each stage's registers are words of their own (arrays,
+    // not one flat vector per kind), which Verilator moves word by word.
+    reg  [R-1:0]  valid_q;
+    reg  [RW-1:0] rem_q  [0:R-1];
+    reg  [R-1:0]  root_q [0:R-1];
+    reg  [NW-1:0] n_q    [0:R-1];
+
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            valid_q <= {R{1'b0}};
+        end else if (ce_i) begin
+            valid_q <= {valid_q[R-2:0], valid_i};
+        end
+    end
 
     genvar k;
     generate
@@ -51,17 +56,14 @@ module csgrt_sqrt_core #(
             wire [RW-1:0] rem_in;
             wire [R-1:0]  root_in;
             wire [NW-1:0] n_in;
-            wire          valid_in;
             if (k == 0) begin : g_in
                 assign rem_in   = {RW{1'b0}};
                 assign root_in  = {R{1'b0}};
                 assign n_in     = n_i;
-                assign valid_in = valid_i;
             end else begin : g_in
-                assign rem_in   = rem_q[(k-1)*RW +: RW];
-                assign root_in  = root_q[(k-1)*R +: R];
-                assign n_in     = n_q[(k-1)*NW +: NW];
-                assign valid_in = valid_q[k-1];
+                assign rem_in   = rem_q[k-1];
+                assign root_in  = root_q[k-1];
+                assign n_in     = n_q[k-1];
             end
             // rem_in < 2^R: its two top bits are always zero
             wire [1:0]    unused_rem_top = rem_in[RW-1:RW-2];
@@ -71,25 +73,14 @@ module csgrt_sqrt_core #(
             // root_in < 2^k <= 2^(R-1): its top bit is always zero
             wire          unused_root_top = root_in[R-1];
 
-            assign valid_d[k]                    = valid_in;
-            assign rem_d[k*RW +: RW]             = take ? rem_sh - trial : rem_sh;
-            assign root_d[k*R +: R]              = {root_in[R-2:0], take};
-            assign n_d[k*NW +: NW]               = n_in;
+            always @(posedge clk_i)
+                if (ce_i) begin
+                    rem_q[k]  <= take ? rem_sh - trial : rem_sh;
+                    root_q[k] <= {root_in[R-2:0], take};
+                    n_q[k]    <= n_in;
+                end
         end
     endgenerate
-
-    always @(posedge clk_i) begin
-        if (!rst_ni) begin
-            valid_q <= {R{1'b0}};
-        end else if (ce_i) begin
-            valid_q <= valid_d;
-        end
-        if (ce_i) begin
-            rem_q  <= rem_d;
-            root_q <= root_d;
-            n_q    <= n_d;
-        end
-    end
 
     // The sideband rides along R enabled clocks in a RAM delay line (block
     // or LUT RAM on the FPGA) rather than R copies in flip-flops.
@@ -98,10 +89,10 @@ module csgrt_sqrt_core #(
     );
 
     assign valid_o = valid_q[R-1];
-    assign root_o  = root_q[(R-1)*R +: R];
+    assign root_o  = root_q[R-1];
 
     // the last stage's remainder and radicand copy are not needed
-    wire unused_last = ^{rem_q[(R-1)*RW +: RW], n_q[(R-1)*NW +: NW]};
+    wire unused_last = ^{rem_q[R-1], n_q[R-1]};
 
     generate
         if (RESULT_BITS < 2 || USER_WIDTH < 1) begin : g_bad_param
