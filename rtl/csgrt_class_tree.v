@@ -75,7 +75,7 @@ module csgrt_class_tree #(
     // node levels: node i (heap order) holds its classification in
     // node_q[i], registered; its children are nodes 2i, 2i+1 or, on the
     // lowest level, the slot classes 2i-NS, 2i+1-NS
-    reg  [CW-1:0] node_q [1:NS-1];
+    (* mem2reg *) reg  [CW-1:0] node_q [1:NS-1];
     wire [CW-1:0] node_d [1:NS-1];
     generate
         for (i = 1; i < NS; i = i + 1) begin : g_node

@@ -18,9 +18,10 @@ module csgrt_delay #(
 );
 
     // one word per stage (an array, not a flat STAGES x WIDTH vector, which
-    // the Verilator model would shift as a whole every clock)
+    // the Verilator model would shift as a whole every clock); mem2reg:
+    // registers for yosys, not a memory
     reg [STAGES-1:0] valid_q;
-    reg [WIDTH-1:0]  data_q [0:STAGES-1];
+    (* mem2reg *) reg [WIDTH-1:0]  data_q [0:STAGES-1];
 
     genvar k;
     generate

@@ -85,9 +85,9 @@ module csgrt_div_core #(
     // vector per kind): Verilator then moves each word by itself instead of
     // shifting QB-word vectors every clock.
     reg  [QB-1:0] valid_q;
-    reg  [DW-1:0] rem_q  [0:QB-1];
-    reg  [QB-1:0] quot_q [0:QB-1];
-    reg  [SW-1:0] side_q [0:QB-1];
+    (* mem2reg *) reg  [DW-1:0] rem_q  [0:QB-1];
+    (* mem2reg *) reg  [QB-1:0] quot_q [0:QB-1];
+    (* mem2reg *) reg  [SW-1:0] side_q [0:QB-1];
 
     wire [SW-1:0] side0 = {s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
 

@@ -172,12 +172,12 @@ module csgrt_event_sort #(
     // ---- banks ------------------------------------------------------------
     // The banks are arrays of cells (one DW-bit word each), not flat N x DW
     // vectors: the Verilator model then moves each cell as a word of its own.
-    reg [DW-1:0]            fill_q [0:N-1];   // sorted, cells 0 .. fcnt-1 valid
+    (* mem2reg *) reg [DW-1:0]            fill_q [0:N-1];   // sorted, cells 0 .. fcnt-1 valid
     reg [NB-1:0]            fcnt_q;
     reg                     full_q;        // fill bank holds a complete ray
     reg [NS-1:0]            fflags_q;
     reg [PAYLOAD_WIDTH-1:0] fpay_q;
-    reg [DW-1:0]            drain_q [0:N-1];  // sorted, cell 0 is the next event
+    (* mem2reg *) reg [DW-1:0]            drain_q [0:N-1];  // sorted, cell 0 is the next event
     reg [NB-1:0]            dcnt_q;
     reg                     busy_q;        // drain bank holds a ray
     reg [NS-1:0]            dflags_q;

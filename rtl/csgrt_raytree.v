@@ -184,7 +184,7 @@ module csgrt_raytree #(
     reg [P-1:0]        busy_q, spawning_q, shade_q, pop_q;
     reg [11:0]         x_q     [0:P-1];
     reg [11:0]         y_q     [0:P-1];
-    reg [OBW:0]        seq_q   [0:P-1];
+    (* mem2reg *) reg [OBW:0] seq_q [0:P-1];   // registers, not a memory (yosys)
     reg [38:0]         acc_q   [0:P-1];
     reg [PW-1:0]       pend_q  [0:P-1];
     reg [SPW-1:0]      sp_q    [0:P-1];

@@ -37,9 +37,9 @@ module csgrt_sqrt_core #(
     // writes its own; each stage's registers are words of their own (arrays,
     // not one flat vector per kind), which Verilator moves word by word.
     reg  [R-1:0]  valid_q;
-    reg  [RW-1:0] rem_q  [0:R-1];
-    reg  [R-1:0]  root_q [0:R-1];
-    reg  [NW-1:0] n_q    [0:R-1];
+    (* mem2reg *) reg  [RW-1:0] rem_q  [0:R-1];
+    (* mem2reg *) reg  [R-1:0]  root_q [0:R-1];
+    (* mem2reg *) reg  [NW-1:0] n_q    [0:R-1];
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
