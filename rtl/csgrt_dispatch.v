@@ -7,8 +7,14 @@
 // so the lanes see one pair per clock. Each accepted ray is also pushed,
 // whole, into the ray queue that waits beside the pipeline for its hit.
 //
-// A group starts when it is full, or early with the frame's last ray; lanes
-// without a ray in that last group get no pairs.
+// A group starts when it is full, or early with the frame's last ray, or
+// (NUM_UNITS > 1) early whenever the pair issue is free and no ray comes in
+// that clock: the ray tree's secondary rays come in bursts, and a group
+// must not wait for a ray that only its own results would spawn. Lanes
+// without a ray in a group get no pairs. Each group's size goes into the
+// group queue (group_*_o, in ray order), from which the merge behind the
+// lanes knows how many lanes hold a record of the group: lane k holds the
+// group's ray k.
 //
 // With INFO_W > 0 (secondary rays) every ray comes with an info word for
 // its lane's csgrt_event_sort (inherited flags, t limit, look-behind run):
@@ -29,7 +35,8 @@ module csgrt_dispatch #(
     parameter RAY_W       = 24 + 6 * BITS,     // {payload, o, d}: o and d in the low 6 BITS
     parameter INFO_W      = 0,                 // info word per ray (0: none)
     parameter INFO_DEPTH  = 16,                // info FIFO entries per lane
-    parameter INFO_P      = (INFO_W > 0) ? INFO_W : 1
+    parameter INFO_P      = (INFO_W > 0) ? INFO_W : 1,
+    parameter GW          = $clog2(NUM_UNITS + 1)  // group size width
 ) (
     input  wire                       clk_i,
     input  wire                       rst_ni,
@@ -48,6 +55,11 @@ module csgrt_dispatch #(
     output wire                       queue_valid_o,
     input  wire                       queue_ready_i,
     output wire [RAY_W-1:0]           queue_ray_o,
+    // the group queue: rays per group, in ray order (NUM_UNITS > 1; with
+    // one lane every group is one ray and group_valid_o is 1)
+    output wire                       group_valid_o,
+    input  wire                       group_ready_i,
+    output wire [GW-1:0]              group_size_o,
     // leaf memory read port (registered: data one clock after the address)
     output wire [LEAF_BITS-1:0]       leaf_addr_o,
     input  wire [10*BITS-1:0]         leaf_coef_i,
@@ -81,8 +93,12 @@ module csgrt_dispatch #(
     // all lanes holding a pair take it (or none holds one)
     wire advance = &(pair_ready_i | ~pair_valid_o);
     wire take    = advance && cand_valid;          // a candidate moves into the pair registers
-    wire launch  = fill_done_q && cand_ready;       // the filled group starts issuing
     wire accept  = ray_valid_i && ray_ready_o;
+    wire group_room;                                // the group queue has room (NUM_UNITS > 1)
+    // the filled group starts issuing; with several lanes also a part-filled
+    // one when no ray comes in (a full ray queue included)
+    wire early   = (NUM_UNITS > 1) && fill_count_q != {CW{1'b0}} && !accept;
+    wire launch  = (fill_done_q || early) && cand_ready && group_room;
 
     wire info_room;   // the accepting lane's info FIFO has room
     assign ray_ready_o = !fill_done_q && queue_room && info_room;
@@ -107,6 +123,20 @@ module csgrt_dispatch #(
         .ready_i (queue_ready_i),
         .data_o  (queue_ray_o)
     );
+
+    generate
+        if (NUM_UNITS > 1) begin : g_groups
+            csgrt_fifo #(.WIDTH(GW), .DEPTH(64)) u_group_queue (
+                .clk_i, .rst_ni,
+                .valid_i (launch), .ready_o (group_room), .data_i (fill_count_q[GW-1:0]),
+                .valid_o (group_valid_o), .ready_i (group_ready_i), .data_o (group_size_o));
+        end else begin : g_one_lane
+            assign group_room    = 1'b1;
+            assign group_valid_o = 1'b1;
+            assign group_size_o  = {{(GW-1){1'b0}}, 1'b1};
+            wire unused_group = group_ready_i;
+        end
+    endgenerate
 
     // While the pair registers wait, read their own leaf again, so that the
     // memory's output register (the pairs' coefficient field) holds.

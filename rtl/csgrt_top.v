@@ -147,6 +147,9 @@ module csgrt_top #(
     localparam U = NUM_UNITS;
     wire                   queue_valid, queue_ready;
     wire [RAY_W-1:0]       queue_ray;
+    localparam GW = $clog2(NUM_UNITS + 1);
+    wire                   group_valid, group_ready;
+    wire [GW-1:0]          group_size;
     wire [U-1:0]           pair_valid, pair_ready;
     wire                   pair_last;
     wire [U*3*BITS-1:0]    pair_o, pair_d;
@@ -169,6 +172,7 @@ module csgrt_top #(
         .ray_last_i (d_last), .info_i (d_info),
         .info_valid_o (lane_info_valid), .info_ready_i (lane_info_ready), .info_o (lane_info),
         .queue_valid_o (queue_valid), .queue_ready_i (queue_ready), .queue_ray_o (queue_ray),
+        .group_valid_o (group_valid), .group_ready_i (group_ready), .group_size_o (group_size),
         .leaf_addr_o (leaf_a_addr), .leaf_coef_i (leaf_a_coef), .leaf_slot_i (leaf_a_slot),
         .pair_valid_o (pair_valid), .pair_ready_i (pair_ready),
         .pair_o_o (pair_o), .pair_d_o (pair_d), .pair_coef_o (pair_coef),
@@ -332,11 +336,13 @@ module csgrt_top #(
     wire              res_inside /*verilator public_flat_rd*/ = l_res_inside[0];
 
     // ---------------------------------------------------------------- merge
-    // Hit records back in ray order: ray n comes from lane n mod U.
+    // Hit records back in ray order: a group's ray k comes from lane k, the
+    // group's size from the dispatcher's group queue.
     localparam LW = (U > 1) ? $clog2(U) : 1;
     reg  [LW-1:0] merge_lane_q;
     wire [31:0]   merge_lane = {{(32-LW){1'b0}}, merge_lane_q};
-    wire hit_valid    /*verilator public_flat_rd*/ = w_valid[merge_lane];
+    wire          group_end  = merge_lane + 32'd1 == {{(32-GW){1'b0}}, group_size};   // the group's last lane
+    wire hit_valid    /*verilator public_flat_rd*/ = w_valid[merge_lane] && group_valid;
     wire hit_ready    /*verilator public_flat_rd*/;
     wire hit_hit      /*verilator public_flat_rd*/ = w_hit[merge_lane];
     wire hit_entering /*verilator public_flat_rd*/ = w_entering[merge_lane];
@@ -347,13 +353,14 @@ module csgrt_top #(
     wire [SLOTS-1:0]     hit_near  = w_near[merge_lane*SLOTS +: SLOTS];
     wire [SLOTS-1:0]     hit_after = w_after[merge_lane*SLOTS +: SLOTS];
     wire [RUN_W-1:0]     hit_run   = w_run[merge_lane*RUN_W +: RUN_W];
-    assign w_ready = hit_ready ? ({{(U-1){1'b0}}, 1'b1} << merge_lane) : {U{1'b0}};
+    assign w_ready     = (hit_ready && group_valid) ? ({{(U-1){1'b0}}, 1'b1} << merge_lane) : {U{1'b0}};
+    assign group_ready = hit_valid && hit_ready && group_end;
 
     always @(posedge clk_i) begin
         if (!rst_ni || start)
             merge_lane_q <= {LW{1'b0}};
         else if (hit_valid && hit_ready)
-            merge_lane_q <= (merge_lane + 32'd1 == U) ? {LW{1'b0}} : merge_lane_q + 1'b1;
+            merge_lane_q <= group_end ? {LW{1'b0}} : merge_lane_q + 1'b1;
     end
 
     // ---------------------------------------------------- shading lookup
@@ -533,6 +540,16 @@ module csgrt_top #(
         end
     endgenerate
 
+
+    generate
+        if (NUM_UNITS > 1 && REFRACTION != 0) begin : g_bad_param
+            // the look-ahead's quadric test (csgrt_quadric_at) answers lane 0 only
+            initial begin
+                $display("ERROR %m: REFRACTION needs NUM_UNITS = 1 (the look-ahead's quadric test serves one lane)");
+                $finish;
+            end
+        end
+    endgenerate
 
     // ---------------------------------------------------- frame and statistics
     reg [63:0] pairs_now;   // pairs handed to the lanes in this clock
