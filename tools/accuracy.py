@@ -30,7 +30,8 @@ empty cell.
 
 Results: docs/accuracy/results.csv, one row per bits x method x scene (with
 date, machine, commit). The sweep resumes: rows already in the CSV are
-skipped unless --force (--redo-model measures only the model's columns
+skipped unless --force (--redo-rtl measures only the RTL's columns again,
+its synthesis included; --redo-model only the model's columns
 again); Verilator builds are cached per configuration under build/sim/ (the
 `make sim` rule), synthesis results under out/accuracy/synth/<tag>/. Rows
 already in the CSV that lack the synthesis columns get only those (no
@@ -477,13 +478,14 @@ def sweep(a):
         need_synth = (not a.no_synth) and "exact" in a.methods and any(
             synth_missing(index[k], a) for ms, k in keys.items() if ms[0] == "exact" and k in index)
         redo = a.redo_model and any(k in index for k in keys.values())
-        if not todo and not need_synth and not redo:
+        redo_rtl = a.redo_rtl and any(k in index for ms, k in keys.items() if ms[0] == "exact")
+        if not todo and not need_synth and not redo and not redo_rtl:
             step += len(keys)
             log(f"BITS={bits}: all {len(keys)} rows in {os.path.relpath(a.csv)} (--force to redo)")
             continue
         t_bits = time.time()
         stab = stability(bits, a.transforms, a.threads, work, a.force or a.redo_model) if todo or redo else None
-        syn = synth(bits, a) if not a.no_synth and "exact" in a.methods else None
+        syn = synth(bits, a) if not a.no_synth and "exact" in a.methods and (todo or need_synth or redo_rtl) else None
         binaries = {}
         for scene in a.scenes:
             name = scene_name(scene)
@@ -500,7 +502,18 @@ def sweep(a):
                         r["model_date"] = now
                         r["notes"] = "; ".join(x for x in (r.get("model_notes"), r.get("rtl_notes")) if x)
                         done.append("model columns redone")
-                    if method == "exact" and syn is not None and synth_missing(r, a, syn):
+                    if redo_rtl and method == "exact":
+                        # the RTL's columns again (a changed RTL or simulator), and its synthesis
+                        log(f"[{step}/{total}] BITS={bits} {method} {name}: RTL columns again (--redo-rtl)")
+                        rtl_notes = []
+                        rtl_columns(r, a, bits, scene, binaries, work, rtl_notes)
+                        r["rtl_notes"] = "; ".join(rtl_notes)
+                        r["notes"] = "; ".join(x for x in (r.get("model_notes"), r.get("rtl_notes")) if x)
+                        r.update(date=now, machine=mach, commit=head)
+                        if syn is not None:
+                            fill_synth(r, syn, frame_size)
+                        done.append("RTL columns redone")
+                    elif method == "exact" and syn is not None and synth_missing(r, a, syn):
                         fill_synth(r, syn, frame_size)
                         done.append("synthesis columns added")
                     if done:
@@ -517,29 +530,7 @@ def sweep(a):
                 ok = model_columns(r, a, bits, scene, method, stab, work)
                 rtl_notes = []
                 if method == "exact" and ok:
-                    r["isect_latency"] = 2 * F + 19   # csgrt_isect.v; asserted by tb/isect at 12, 16, 24, 32
-                    fx = (1, 1, 1) if a.effects == "all" else scene_units(scene)
-                    if fx not in binaries:
-                        binaries[fx] = sim_build(bits, *fx)
-                    log(f"    RTL: 1x1 frame (pixel latency)")
-                    lat = simulate(binaries[fx], scene, bits, (1, 1), a.ties, os.path.join(work, "img"))
-                    r["pixel_latency"] = lat["cycles"]
-                    log(f"    RTL: {sz(sim_size)} frame in Verilator")
-                    # the machine's load when the frame starts: the wall time is only comparable between quiet runs
-                    r["sim_load"] = fmt(os.getloadavg()[0], 2)
-                    s = simulate(binaries[fx], scene, bits, sim_size, a.ties, os.path.join(work, "img"))
-                    npix = sim_size[0] * sim_size[1]
-                    r.update(cycles_per_frame=s["cycles"], cycles_per_pixel=fmt(s["cycles"] / npix, 3),
-                             rays_per_pixel=fmt(s["rays_per_pixel"]), isect_utilisation=fmt(s["utilisation"]),
-                             sim_wall_s=fmt(s["wall_s"]), sim_cycles_per_s=fmt(s["cycles_per_s"]),
-                             rtl_matched=fmt(s["matched"]), rtl_pixels=fmt(s["pixels"]))
-                    # cycles per pixel at the small frame, scaled to the projected frame
-                    r["frame_cycles_proj"] = round(s["cycles"] / npix * frame_size[0] * frame_size[1])
-                    log(f"    {s['cycles']} cycles ({float(r['cycles_per_pixel']):.1f} per pixel), pixel latency "
-                        f"{lat['cycles']}, matched {s['matched']} of {s['pixels']} pixels, {s['wall_s']:.1f} s in Verilator")
-                    if s["matched"] != s["pixels"] or lat["matched"] != lat["pixels"]:
-                        rtl_notes.append("RTL differs from the model")
-                        log(f"    WARNING: the RTL differs from the model ({s['matched']} of {s['pixels']})")
+                    rtl_columns(r, a, bits, scene, binaries, work, rtl_notes)
                     if syn is not None:
                         fill_synth(r, syn, frame_size)
                 r["rtl_notes"] = "; ".join(rtl_notes)
@@ -552,6 +543,37 @@ def sweep(a):
                 log(f"    row written ({time.time() - t0:.1f} s)")
         log(f"BITS={bits}: done in {time.time() - t_bits:.0f} s")
     log(f"results: {os.path.relpath(a.csv)} ({len(rows)} rows)")
+
+
+def rtl_columns(r, a, bits, scene, binaries, work, rtl_notes):
+    """The RTL's columns of an exact-method row: latencies, cycles, matched pixels, Verilator time
+    (the `make sim` binary of the width, built once per effect set in `binaries`)."""
+    F = bits - 3
+    sim_size, frame_size = a.sim_size, a.frame_size
+    sz = lambda s: f"{s[0]}x{s[1]}"
+    r["isect_latency"] = 2 * F + 19   # csgrt_isect.v; asserted by tb/isect at 12, 16, 24, 32
+    fx = (1, 1, 1) if a.effects == "all" else scene_units(scene)
+    if fx not in binaries:
+        binaries[fx] = sim_build(bits, *fx)
+    log(f"    RTL: 1x1 frame (pixel latency)")
+    lat = simulate(binaries[fx], scene, bits, (1, 1), a.ties, os.path.join(work, "img"))
+    r["pixel_latency"] = lat["cycles"]
+    log(f"    RTL: {sz(sim_size)} frame in Verilator")
+    # the machine's load when the frame starts: the wall time is only comparable between quiet runs
+    r["sim_load"] = fmt(os.getloadavg()[0], 2)
+    s = simulate(binaries[fx], scene, bits, sim_size, a.ties, os.path.join(work, "img"))
+    npix = sim_size[0] * sim_size[1]
+    r.update(cycles_per_frame=s["cycles"], cycles_per_pixel=fmt(s["cycles"] / npix, 3),
+             rays_per_pixel=fmt(s["rays_per_pixel"]), isect_utilisation=fmt(s["utilisation"]),
+             sim_wall_s=fmt(s["wall_s"]), sim_cycles_per_s=fmt(s["cycles_per_s"]),
+             rtl_matched=fmt(s["matched"]), rtl_pixels=fmt(s["pixels"]))
+    # cycles per pixel at the small frame, scaled to the projected frame
+    r["frame_cycles_proj"] = round(s["cycles"] / npix * frame_size[0] * frame_size[1])
+    log(f"    {s['cycles']} cycles ({float(r['cycles_per_pixel']):.1f} per pixel), pixel latency "
+        f"{lat['cycles']}, matched {s['matched']} of {s['pixels']} pixels, {s['wall_s']:.1f} s in Verilator")
+    if s["matched"] != s["pixels"] or lat["matched"] != lat["pixels"]:
+        rtl_notes.append("RTL differs from the model")
+        log(f"    WARNING: the RTL differs from the model ({s['matched']} of {s['pixels']})")
 
 
 def synth_missing(r, a=None, syn=None):
@@ -1110,6 +1132,8 @@ def main():
     ap.add_argument("--stop-after-synth", action="store_true",
                     help="yosys only (area without Fmax), for a design that does not fit the device")
     ap.add_argument("--force", action="store_true", help="redo rows already in the CSV")
+    ap.add_argument("--redo-rtl", action="store_true",
+                    help="measure the RTL columns (simulation, synthesis) of rows in the CSV again")
     ap.add_argument("--redo-model", action="store_true",
                     help="measure the model's columns (image error, violations) of rows in the CSV again, "
                          "keeping their RTL and synthesis columns (after a model or stability-suite change)")

@@ -122,6 +122,39 @@ def test_resume(ctx):
     check(open(path).read() == before, "the CSV changed on a resumed sweep")
 
 
+def test_redo_rtl(ctx):
+    # --redo-rtl measures the RTL's columns of the rows in the CSV again and
+    # leaves the model's columns and the epsilon row as they are
+    path = os.path.join(ctx["tmp"], "results.csv")
+    rows = rows_of(ctx["tmp"])
+    want = {r["method"]: dict(r) for r in rows}
+    with open(path, newline="") as f:
+        fields = csv.DictReader(f).fieldnames
+    for r in rows:
+        if r["method"] == "exact":
+            r["cycles_per_frame"], r["rtl_matched"], r["psnr_db"] = "1", "0", "99.0"
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows(rows)
+    rc, out = sweep(ctx["tmp"], "--redo-rtl")
+    check(rc == 0, f"the --redo-rtl sweep exited with {rc}:\n{out[-2000:]}")
+    by = {r["method"]: r for r in rows_of(ctx["tmp"])}
+    e = by["exact"]
+    check(e["cycles_per_frame"] == want["exact"]["cycles_per_frame"],
+          f"cycles {e['cycles_per_frame']} after --redo-rtl, measured {want['exact']['cycles_per_frame']} before")
+    check(e["rtl_matched"] == e["rtl_pixels"], f"RTL matched {e['rtl_matched']} of {e['rtl_pixels']}")
+    check(e["psnr_db"] == "99.0", f"--redo-rtl changed a model column (PSNR {e['psnr_db']})")
+    check(by["epsilon"] == want["epsilon"], "--redo-rtl changed the epsilon row")
+    # leave the CSV as the first sweep wrote it, for the report test
+    for r in (e,):
+        r["psnr_db"] = want["exact"]["psnr_db"]
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows([by["exact"], by["epsilon"]])
+
+
 def test_report(ctx):
     tmp = ctx["tmp"]
     md, plots = os.path.join(tmp, "accuracy.md"), os.path.join(tmp, "plots")
@@ -151,7 +184,7 @@ def test_helpers(ctx):
     check(math.isinf(psnr) and share == 0 and mx == 0, f"self comparison: {psnr} {share} {mx}")
 
 
-TESTS = [("SweepRows", test_sweep_rows), ("Resume", test_resume), ("Report", test_report),
+TESTS = [("SweepRows", test_sweep_rows), ("Resume", test_resume), ("RedoRtl", test_redo_rtl), ("Report", test_report),
          ("Helpers", test_helpers)]
 
 
