@@ -246,6 +246,9 @@ thread_local bool t_lookahead_passed_later = false;
 // here like any other: a culled trace then reports what the full one does
 // (no culled leaf has an event at the hit's t, complete_culled()).
 template <typename T>
+size_t tie_group_start(const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed, T t);
+
+template <typename T>
 int surface_leaf(const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed, std::vector<uint8_t>& flags,
                  ClassTree& tree, size_t hit) {
     const T t = ahead[hit].t;
@@ -258,8 +261,7 @@ int surface_leaf(const std::vector<Event<T>>& ahead, const std::vector<size_t>& 
     // The tree (holding the flags after the hit's toggle) taken back to the
     // flags before the group, the candidates classified there, and the
     // group's crossings done again.
-    size_t c0 = crossed.size();
-    while (c0 > 0 && crossed[c0 - 1] >= g0) --c0;
+    const size_t c0 = tie_group_start(ahead, crossed, t);
     for (size_t k = crossed.size(); k-- > c0;) {
         const Event<T>& e = ahead[crossed[k]];
         flags[e.leaf] = !e.entering;
@@ -281,6 +283,16 @@ int surface_leaf(const std::vector<Event<T>>& ahead, const std::vector<size_t>& 
         tree.set_flag(e.leaf, e.entering);
     }
     return surface;
+}
+
+// The index in `crossed` of the first crossing of the hit's tie group: the
+// crossings at the hit's t are the last ones in `crossed` (the hit's is the
+// very last), since the sorted events at one t lie next to each other.
+template <typename T>
+size_t tie_group_start(const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed, T t) {
+    size_t c = crossed.size() - 1;
+    while (c > 0 && ahead[crossed[c - 1]].t == t) --c;
+    return c;
 }
 
 // The walk shared by both arithmetics. `flags` holds the origin flags on
@@ -335,9 +347,11 @@ TraceResult<T> walk(const CompiledScene& cs, std::vector<Event<T>>& ahead, std::
             // before the group: the RTL keeps them as the group starts), and
             // of the crossings before the group at most kLookBehind (the RTL
             // carries that many beside the hit).
-            size_t group = crossed.size() - 1;   // crossed[group]: the group's first crossing
-            for (; group > 0 && ahead[crossed[group - 1]].t == e.t; --group)
-                res.flags_before[ahead[crossed[group - 1]].leaf] = !ahead[crossed[group - 1]].entering;
+            // (latest first, so that a leaf crossed twice in the group gets
+            // its flag from before its earlier crossing)
+            const size_t group = tie_group_start(ahead, crossed, e.t);   // crossed[group]: the group's first crossing
+            for (size_t k = crossed.size() - 1; k-- > group;)
+                res.flags_before[ahead[crossed[k]].leaf] = !ahead[crossed[k]].entering;
             const size_t oldest = group > size_t(kLookBehind) ? group - kLookBehind : 0;
             res.flags_hit_near = res.flags_before;
             for (size_t k = group; k-- > oldest;) res.near_run.push_back(ahead[crossed[k]]);
