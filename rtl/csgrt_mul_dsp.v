@@ -39,19 +39,29 @@ module csgrt_mul_dsp #(
         .B0 (b_i[0]),  .B1 (b_i[1]),  .B2 (b_i[2]),  .B3 (b_i[3]),  .B4 (b_i[4]),  .B5 (b_i[5]),
         .B6 (b_i[6]),  .B7 (b_i[7]),  .B8 (b_i[8]),  .B9 (b_i[9]),  .B10(b_i[10]), .B11(b_i[11]),
         .B12(b_i[12]), .B13(b_i[13]), .B14(b_i[14]), .B15(b_i[15]), .B16(b_i[16]), .B17(b_i[17]),
+        .SIGNEDA (SA), .SIGNEDB (SB), .SOURCEA (1'b0), .SOURCEB (1'b0),
+        .CLK0 (clk_i), .CE0 (ce_i), .RST0 (1'b0),
+`ifndef SYNTHESIS
+        // For the FPGA these inputs stay unconnected (nextpnr ties them
+        // off): tied to a constant each would be a net to route into the
+        // DSP tile (70 per block, and the router failed on them at BITS 16)
+        // and would take the tile's shared clock, enable and reset ports.
+        // The C input feeds only the ALU cascade, the shift inputs are
+        // not selected (SOURCEA/B = 0), the other clocks, enables and
+        // resets are not used by any register (all are on CLK0/CE0/RST0).
         .C0 (1'b0), .C1 (1'b0), .C2 (1'b0), .C3 (1'b0), .C4 (1'b0), .C5 (1'b0),
         .C6 (1'b0), .C7 (1'b0), .C8 (1'b0), .C9 (1'b0), .C10(1'b0), .C11(1'b0),
         .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
-        .SIGNEDA (SA), .SIGNEDB (SB), .SOURCEA (1'b0), .SOURCEB (1'b0),
-        .CLK0 (clk_i), .CLK1 (1'b0), .CLK2 (1'b0), .CLK3 (1'b0),
-        .CE0 (ce_i),   .CE1 (1'b0),  .CE2 (1'b0),  .CE3 (1'b0),
-        .RST0 (1'b0),  .RST1 (1'b0), .RST2 (1'b0), .RST3 (1'b0),
+        .CLK1 (1'b0), .CLK2 (1'b0), .CLK3 (1'b0),
+        .CE1 (1'b0),  .CE2 (1'b0),  .CE3 (1'b0),
+        .RST1 (1'b0), .RST2 (1'b0), .RST3 (1'b0),
         .SRIA0 (1'b0), .SRIA1 (1'b0), .SRIA2 (1'b0), .SRIA3 (1'b0), .SRIA4 (1'b0), .SRIA5 (1'b0),
         .SRIA6 (1'b0), .SRIA7 (1'b0), .SRIA8 (1'b0), .SRIA9 (1'b0), .SRIA10(1'b0), .SRIA11(1'b0),
         .SRIA12(1'b0), .SRIA13(1'b0), .SRIA14(1'b0), .SRIA15(1'b0), .SRIA16(1'b0), .SRIA17(1'b0),
         .SRIB0 (1'b0), .SRIB1 (1'b0), .SRIB2 (1'b0), .SRIB3 (1'b0), .SRIB4 (1'b0), .SRIB5 (1'b0),
         .SRIB6 (1'b0), .SRIB7 (1'b0), .SRIB8 (1'b0), .SRIB9 (1'b0), .SRIB10(1'b0), .SRIB11(1'b0),
         .SRIB12(1'b0), .SRIB13(1'b0), .SRIB14(1'b0), .SRIB15(1'b0), .SRIB16(1'b0), .SRIB17(1'b0),
+`endif
         .P0 (p_o[0]),  .P1 (p_o[1]),  .P2 (p_o[2]),  .P3 (p_o[3]),  .P4 (p_o[4]),  .P5 (p_o[5]),
         .P6 (p_o[6]),  .P7 (p_o[7]),  .P8 (p_o[8]),  .P9 (p_o[9]),  .P10(p_o[10]), .P11(p_o[11]),
         .P12(p_o[12]), .P13(p_o[13]), .P14(p_o[14]), .P15(p_o[15]), .P16(p_o[16]), .P17(p_o[17]),
