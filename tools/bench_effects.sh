@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # bench_effects.sh — `make bench-effects`: each effect scene simulated on the
 # build with only the effect units it uses and on the full build
-# (EFFECTS=all): simulation wall time (median of RUNS), cycles, whether the
+# (EFFECTS=all): simulation wall time (median of RUNS, the two builds run
+# alternately so that a change in load falls on both), cycles, whether the
 # two images are identical, and the Yosys cell count of each build
 # (csgrt_top after proc/opt/memory/techmap: generic cells, no FPGA mapping).
 # A benchmark, not a test: it prints figures.
@@ -10,7 +11,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-W=64; H=48; BITS=24; RUNS=3; YOSYS=1
+W=64; H=48; BITS=24; RUNS=5; YOSYS=1
 SCENES=()
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -52,19 +53,28 @@ cells() {   # shadows reflection refraction
 
 median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
 
-run() {   # bin scene out -> "seconds cycles"
-    local bin=$1 scene=$2 out=$3 name
-    name=$(basename "$scene" .pov)
-    build/csgrt compile "$scene" -o "$OUT/$name.bin" --bits "$BITS" --width "$W" --height "$H" \
+compile_scene() {   # scene -> the scene image in $OUT
+    build/csgrt compile "$1" -o "$OUT/$(basename "$1" .pov).bin" --bits "$BITS" --width "$W" --height "$H" \
         --max-leaves 64 --tree-height 8 2>/dev/null
-    local times=() cycles=""
+}
+
+# one simulation: bin scene out -> "seconds cycles"
+run_once() {
+    local log
+    log=$("$1" --scene-image "$OUT/$(basename "$2" .pov).bin" --out "$3" --no-compare 2>/dev/null)
+    echo "$(echo "$log" | awk '/simulation wall time/ {print $4}') $(echo "$log" | awk '/cycles per frame/ {print $4}')"
+}
+
+# the two builds alternately, RUNS times each, so that a change in the
+# machine's load falls on both: spec_bin full_bin scene name ->
+# "spec_median spec_cycles full_median full_cycles"
+run_pair() {
+    local spec=() full=() cs cf t
     for _ in $(seq "$RUNS"); do
-        local log
-        log=$("$bin" --scene-image "$OUT/$name.bin" --out "$out" --no-compare 2>/dev/null)
-        times+=("$(echo "$log" | awk '/simulation wall time/ {print $4}')")
-        cycles=$(echo "$log" | awk '/cycles per frame/ {print $4}')
+        read -r t cs < <(run_once "$1" "$3" "$OUT/${4}_spec.png"); spec+=("$t")
+        read -r t cf < <(run_once "$2" "$3" "$OUT/${4}_all.png"); full+=("$t")
     done
-    echo "$(printf '%s\n' "${times[@]}" | median) $cycles"
+    echo "$(printf '%s\n' "${spec[@]}" | median) $cs $(printf '%s\n' "${full[@]}" | median) $cf"
 }
 
 printf "%-22s %-9s %10s %10s %10s %10s %8s %10s %10s %s\n" scene units "spec s" "full s" "full/spec" \
@@ -74,8 +84,8 @@ for scene in "${SCENES[@]}"; do
     read -r S R F < <(build/csgrt units "$scene" 2>/dev/null |
                       sed 's/SHADOWS=\([01]\) REFLECTION=\([01]\) REFRACTION=\([01]\)/\1 \2 \3/')
     build "$S" "$R" "$F"; build 1 1 1
-    read -r ts cs < <(run "$(sim_bin "$S" "$R" "$F")" "$scene" "$OUT/${name}_spec.png")
-    read -r tf cf < <(run "$(sim_bin 1 1 1)" "$scene" "$OUT/${name}_all.png")
+    compile_scene "$scene"
+    read -r ts cs tf cf < <(run_pair "$(sim_bin "$S" "$R" "$F")" "$(sim_bin 1 1 1)" "$scene" "$name")
     if idiff -fail 0 -warn 0 "$OUT/${name}_spec.png" "$OUT/${name}_all.png" >/dev/null 2>&1; then
         same=identical
     else
