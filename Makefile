@@ -84,12 +84,14 @@ include tb/tb.mk
 
 # ------------------------------------------- csgrt_top in Verilator
 # $(1): output binary, $(2): BITS, $(3): C++ driver, $(4): extra C++ flags,
-# $(5): extra libraries, $(6): NUM_UNITS, $(7): effect units (-GSHADOWS=..).
+# $(5): extra libraries, $(6): NUM_UNITS, $(7): effect units (-GSHADOWS=..),
+# $(8): more verilator flags (--trace-fst for make sim's TRACE=1: the frame
+# benches leave it out, which takes about a third of the C++ off each build).
 # One build per configuration, cached under build/.
 define VERILATE_TOP
 	@mkdir -p $(1).obj
 	@echo "verilator: building csgrt_top BITS=$(2) $(7) for $(notdir $(1)) (once per configuration)"
-	@verilator --cc --exe --build -O3 -j 2 --trace-fst -Wall -y rtl --top-module csgrt_top \
+	@verilator --cc --exe --build -O3 -j 2 $(8) -Wall -y rtl --top-module csgrt_top \
 	    -GBITS=$(2) -GMAX_LEAVES=$(HW_MAX_LEAVES) -GTREE_HEIGHT=$(HW_TREE_HEIGHT) -GNUM_UNITS=$(6) $(7) \
 	    -MAKEFLAGS OPT_FAST=-O2 -MAKEFLAGS OPT_SLOW=-O1 -MAKEFLAGS OPT_GLOBAL=-O2 \
 	    -CFLAGS "-std=c++17 -O2 -I$(CURDIR)/model -I$(CURDIR)/sim $(4)" \
@@ -128,7 +130,7 @@ SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)
 SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
 $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION))
+	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION),--trace-fst)
 
 sim: model
 	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1 REFRACTION=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0 REFRACTION=0,$$($(BUILD)/csgrt units $(SCENE))))" \

@@ -10,7 +10,9 @@
 #pragma once
 
 #include <verilated.h>
+#if VM_TRACE_FST   // Verilated with --trace-fst (make sim; the frame benches are not)
 #include <verilated_fst_c.h>
+#endif
 
 #include <cstdint>
 #include <cstdio>
@@ -18,6 +20,7 @@
 #include <functional>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -58,6 +61,7 @@ class TopSim {
         : bits_(bits), leaf_bits_(leaf_bits), tree_height_(tree_height), log_results_(lanes == 1),
           ctx_(new VerilatedContext) {
         ctx_->randReset(2);
+#if VM_TRACE_FST
         if (!fst_path.empty()) ctx_->traceEverOn(true);
         top_.reset(new Top(ctx_.get()));
         if (!fst_path.empty()) {
@@ -65,9 +69,15 @@ class TopSim {
             top_->trace(fst_.get(), 99);
             fst_->open(fst_path.c_str());
         }
+#else
+        if (!fst_path.empty()) throw std::runtime_error("this build has no waveform tracing (Verilate with --trace-fst)");
+        top_.reset(new Top(ctx_.get()));
+#endif
     }
     ~TopSim() {
+#if VM_TRACE_FST
         if (fst_) fst_->close();
+#endif
         top_->final();
     }
     Top& top() { return *top_; }
@@ -75,10 +85,14 @@ class TopSim {
     void tick() {
         top_->clk_i = 0;
         top_->eval();
+#if VM_TRACE_FST
         if (fst_) fst_->dump(time_++);
+#endif
         top_->clk_i = 1;
         top_->eval();
+#if VM_TRACE_FST
         if (fst_) fst_->dump(time_++);
+#endif
         ++cycles_;
     }
 
@@ -201,7 +215,9 @@ class TopSim {
     bool log_results_;
     std::unique_ptr<VerilatedContext> ctx_;
     std::unique_ptr<Top> top_;
+#if VM_TRACE_FST
     std::unique_ptr<VerilatedFstC> fst_;
+#endif
     uint64_t time_ = 0, cycles_ = 0;
     bool logging_ = true;
     std::deque<RayLog> logs_;
