@@ -230,6 +230,16 @@ namespace {
 // traced again without culling (trace_fx).
 thread_local bool t_lookahead_passed_later = false;
 
+// The index in `crossed` of the first crossing of the hit's tie group: the
+// crossings at the hit's t are the last ones in `crossed` (the hit's is the
+// very last), since the sorted events at one t lie next to each other.
+template <typename T>
+size_t tie_group_start(const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed, T t) {
+    size_t c = crossed.size() - 1;
+    while (c > 0 && ahead[crossed[c - 1]].t == t) --c;
+    return c;
+}
+
 // The surface a hit reports, whose normal the hit takes (docs/numerics.md
 // section 5, "the hit's surface"): the hit's tie group is the run of events
 // at the hit's t (the sorted list holds them next to each other); the
@@ -245,9 +255,6 @@ thread_local bool t_lookahead_passed_later = false;
 // Events of dead leaves (outside their live range, cull.h) are classified
 // here like any other: a culled trace then reports what the full one does
 // (no culled leaf has an event at the hit's t, complete_culled()).
-template <typename T>
-size_t tie_group_start(const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed, T t);
-
 template <typename T>
 int surface_leaf(const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed, std::vector<uint8_t>& flags,
                  ClassTree& tree, size_t hit) {
@@ -283,16 +290,6 @@ int surface_leaf(const std::vector<Event<T>>& ahead, const std::vector<size_t>& 
         tree.set_flag(e.leaf, e.entering);
     }
     return surface;
-}
-
-// The index in `crossed` of the first crossing of the hit's tie group: the
-// crossings at the hit's t are the last ones in `crossed` (the hit's is the
-// very last), since the sorted events at one t lie next to each other.
-template <typename T>
-size_t tie_group_start(const std::vector<Event<T>>& ahead, const std::vector<size_t>& crossed, T t) {
-    size_t c = crossed.size() - 1;
-    while (c > 0 && ahead[crossed[c - 1]].t == t) --c;
-    return c;
 }
 
 // The walk shared by both arithmetics. `flags` holds the origin flags on

@@ -500,7 +500,7 @@ def sweep(a):
                         log(f"[{step}/{total}] BITS={bits} {method} {name}: model columns again (--redo-model)")
                         model_columns(r, a, bits, scene, method, stab, work)
                         r["model_date"] = now
-                        r["notes"] = "; ".join(x for x in (r.get("model_notes"), r.get("rtl_notes")) if x)
+                        join_notes(r)
                         done.append("model columns redone")
                     if redo_rtl and method == "exact":
                         # the RTL's columns again (a changed RTL or simulator), and its synthesis
@@ -508,7 +508,7 @@ def sweep(a):
                         rtl_notes = []
                         rtl_columns(r, a, bits, scene, binaries, work, rtl_notes)
                         r["rtl_notes"] = "; ".join(rtl_notes)
-                        r["notes"] = "; ".join(x for x in (r.get("model_notes"), r.get("rtl_notes")) if x)
+                        join_notes(r)
                         r.update(date=now, machine=mach, commit=head)
                         if syn is not None:
                             fill_synth(r, syn, frame_size)
@@ -534,7 +534,7 @@ def sweep(a):
                     if syn is not None:
                         fill_synth(r, syn, frame_size)
                 r["rtl_notes"] = "; ".join(rtl_notes)
-                r["notes"] = "; ".join(x for x in (r["model_notes"], r["rtl_notes"]) if x)
+                join_notes(r)
                 if k in index:
                     rows.remove(index[k])
                 rows.append(r)
@@ -543,6 +543,11 @@ def sweep(a):
                 log(f"    row written ({time.time() - t0:.1f} s)")
         log(f"BITS={bits}: done in {time.time() - t_bits:.0f} s")
     log(f"results: {os.path.relpath(a.csv)} ({len(rows)} rows)")
+
+
+def join_notes(r):
+    """The row's notes: the model's and the RTL's, in that order."""
+    r["notes"] = "; ".join(x for x in (r.get("model_notes"), r.get("rtl_notes")) if x)
 
 
 def rtl_columns(r, a, bits, scene, binaries, work, rtl_notes):
