@@ -488,6 +488,7 @@ CompiledScene compile_scene(const Scene& scene, const CompileOptions& opt) {
         LightInfo li;
         li.pos = frame_point(l.location);
         li.color = l.color;
+        li.shadowless = l.shadowless;
         li.pos_fx = quantise3(li.pos, F, 3, l.pos, "light_source location");
         for (int c = 0; c < 3; ++c)
             li.color_fx[c] = quantise(std::max(0.0, l.color[c]), kColorFrac, kColorIntBits, l.pos, "light_source colour");

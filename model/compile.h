@@ -66,6 +66,7 @@ struct LightInfo {
     glm::dvec3 color{1.0};
     std::array<i64, 3> pos_fx{};   // frac bits
     std::array<i64, 3> color_fx{}; // kColorFrac bits
+    bool shadowless = false;       // casts no shadows: never a shadow ray
 };
 
 struct CameraInfo {

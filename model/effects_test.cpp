@@ -114,6 +114,55 @@ TEST(Effects, Fig8ImageShadowsChangeNothingOnTheLitSide) {
     }
 }
 
+TEST(Effects, ShadowlessLightsCastNoShadow) {
+    // The Fig. 8 scene with its light shadowless. Ground truth: the same
+    // scene with the sphere made empty (cut by a half-space below the floor:
+    // the same leaves' bounds, so the same fixed-point frame), where nothing
+    // can shadow the floor; every floor pixel of the shadowless scene must
+    // equal it bit for bit.
+    // The shadowed scene must differ there (the check can fail), and a
+    // shadows-on render (a build with the shadow unit) of the shadowless
+    // scene must equal its render without shadows (the specialised build).
+    std::string shadowless = kFig8;
+    const std::string light = "light_source { <-2, 6, -3> color rgb 1 }";
+    const size_t at = shadowless.find(light);
+    ASSERT_NE(at, std::string::npos);
+    shadowless.replace(at, light.size(), "light_source { <-2, 6, -3> color rgb 1 shadowless }");
+    const size_t sphere_at = shadowless.find("sphere {");
+    const std::string no_sphere = shadowless.substr(0, sphere_at) + "intersection { " +
+                                  shadowless.substr(sphere_at) + " plane { y, -10 } }\n";
+    for (int bits : {12, 16, 24, 32}) {
+        const CompiledScene cs = compile_text(shadowless, bits), shadowed = compile_text(kFig8, bits),
+                            truth = compile_text(no_sphere, bits);
+        EXPECT_FALSE(scene_effects(cs).shadows);
+        EXPECT_TRUE(scene_effects(shadowed).shadows);
+        EffectSet fx = scene_effects(cs);
+        fx.reflection = false;
+        RenderOptions plain, full;
+        plain.effects = fx;
+        fx.shadows = true;
+        full.effects = fx;
+        const Frame a = render(cs, plain), b = render(cs, full), t = render(truth, plain),
+                    sh = render(shadowed, full);
+        EXPECT_EQ(a.rgb, b.rgb) << bits << " bits: shadows on changed a shadowless scene";
+        int floor = 0, floor_diff = 0, shadowed_diff = 0;
+        for (size_t i = 0; i < a.hit_leaf.size(); ++i) {
+            if (a.hit_leaf[i] < 0 || cs.leaves[a.hit_leaf[i]].what == "sphere") continue;
+            ASSERT_GE(t.hit_leaf[i], 0);
+            ++floor;
+            auto differ = [&](const Frame& f) {
+                return f.rgb[3 * i] != t.rgb[3 * i] || f.rgb[3 * i + 1] != t.rgb[3 * i + 1] ||
+                       f.rgb[3 * i + 2] != t.rgb[3 * i + 2];
+            };
+            floor_diff += differ(a);
+            shadowed_diff += differ(sh);
+        }
+        EXPECT_GT(floor, 500);
+        EXPECT_EQ(floor_diff, 0) << bits << " bits: a shadowless light cast a shadow";
+        EXPECT_GT(shadowed_diff, 20) << bits << " bits: the shadowed light casts no shadow either";
+    }
+}
+
 TEST(Effects, RefractedRaysCarryConsistentMedia) {
     // Through nested transparent solids, every crossing a transmitted ray
     // finds starts in the medium the previous crossing entered.
@@ -174,6 +223,10 @@ TEST(Effects, ScenesReportTheEffectsTheyUse) {
     EXPECT_EQ(mirror.depth, 5);
     EXPECT_TRUE(glass.refraction && glass.reflection);
     EXPECT_EQ(glass.depth, 6);
+    // every light shadowless: no shadow unit
+    const EffectSet studio = fx("studio");
+    EXPECT_EQ(studio.str(), "specular");
+    EXPECT_FALSE(studio.any_secondary());
 }
 
 namespace {

@@ -45,7 +45,7 @@ const std::set<std::string>& csgrt_keywords() {
         "location", "look_at", "angle", "right", "up", "direction", "sky", "perspective",
         "translate", "rotate", "scale", "pigment", "finish", "interior", "texture", "color",
         "colour", "rgb", "rgbf", "ambient", "diffuse", "phong", "phong_size", "reflection", "ior",
-        "open", "assumed_gamma", "max_trace_level", "pi", "x", "y", "z"};
+        "open", "assumed_gamma", "max_trace_level", "shadowless", "pi", "x", "y", "z"};
     return k;
 }
 
@@ -67,7 +67,7 @@ const std::set<std::string>& pov_only_keywords() {
         "material", "media", "fog", "rainbow", "sky_sphere", "specular", "roughness", "brilliance",
         "metallic", "irid", "crand", "conserve_energy", "emission", "subsurface", "fresnel",
         "caustics", "dispersion", "dispersion_samples", "fade_distance", "fade_power", "spotlight",
-        "area_light", "shadowless", "looks_like", "parallel", "point_at", "radius", "falloff",
+        "area_light", "looks_like", "parallel", "point_at", "radius", "falloff",
         "tightness", "jitter", "adaptive", "circular", "orient", "media_interaction",
         "media_attenuation", "projected_through", "orthographic", "fisheye", "ultra_wide_angle",
         "omnimax", "panoramic", "spherical", "mesh_camera", "user_defined", "focal_point",
@@ -979,7 +979,7 @@ private:
         c.right = r * (handedness > 0.0 ? rl : -rl);
     }
 
-    // light_source { <location> [colour] }
+    // light_source { <location> [colour] [shadowless] }
     void parse_light(const Token& kw) {
         expect_open(kw);
         Light l;
@@ -989,7 +989,12 @@ private:
         for (;;) {
             Token t = peek();
             if (t.is('}')) { next(); break; }
-            if (!starts_color(t)) unexpected_in_block(t, kw, "color rgb <r,g,b>");
+            if (t.is("shadowless")) {   // lights every point it faces: no shadow ray (docs/effects.md)
+                next();
+                l.shadowless = true;
+                continue;
+            }
+            if (!starts_color(t)) unexpected_in_block(t, kw, "color rgb <r,g,b>, shadowless");
             Value c = parse_color("light_source colour", false);
             l.color = {c.c[0], c.c[1], c.c[2]};
         }

@@ -353,6 +353,21 @@ TEST(Parse, LightsBackgroundGlobals) {
     Scene d = P("");
     EXPECT_EQ(d.max_trace_level, 5);
     EXPECT_FALSE(d.has_max_trace_level);
+    for (const Light& l : s.lights) EXPECT_FALSE(l.shadowless);
+}
+
+TEST(Parse, ShadowlessLights) {
+    // POV-Ray's keyword, before or after the colour
+    Scene s = P("light_source { <1,2,3> color rgb <0.5,0.25,1> shadowless }\n"
+                "light_source { <0,10,0> shadowless rgb 2 }\n"
+                "light_source { <0,10,0> }\n");
+    ASSERT_EQ(s.lights.size(), 3u);
+    EXPECT_TRUE(s.lights[0].shadowless);
+    EXPECT_TRUE(s.lights[1].shadowless);
+    expect_vec(s.lights[1].color, {2, 2, 2});
+    EXPECT_FALSE(s.lights[2].shadowless);
+    const std::string err = error_of([] { P("light_source { <0,10,0> shadowles }"); });
+    EXPECT_NE(err.find("t.pov:1:25"), std::string::npos) << err;
 }
 
 // ---------------------------------------------------------- malformed input

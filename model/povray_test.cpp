@@ -232,7 +232,7 @@ TEST_P(PovrayMask, AgreesWithCsgrt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Povray, PovrayMask,
-                         ::testing::Values("basic", "default", "csg_mix", "quadrics", "rotated"),
+                         ::testing::Values("basic", "default", "csg_mix", "quadrics", "rotated", "studio"),
                          [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
 
 // ------------------------------------------------------- silhouette offset

@@ -147,7 +147,9 @@ std::string EffectSet::str() const {
 
 EffectSet scene_effects(const CompiledScene& cs) {
     EffectSet e;
-    e.shadows = !cs.lights.empty() && !cs.leaves.empty();
+    // shadows: a light that casts them (not shadowless) and an object
+    for (const LightInfo& l : cs.lights) e.shadows = e.shadows || !l.shadowless;
+    e.shadows = e.shadows && !cs.leaves.empty();
     for (size_t m = 1; m < cs.materials.size(); ++m) {
         e.specular = e.specular || cs.materials[m].phong > 0;
         e.reflection = e.reflection || cs.materials[m].reflection > 0;
@@ -196,10 +198,13 @@ void accumulate_fx(const CompiledScene& cs, const RayFx& ray, const std::vector<
     const std::array<i64, 3> n = spawn ? normal_fx(cs, tr.leaf, p, ray.d) : std::array<i64, 3>{};
 
     // Shadows: a ray from the hit point towards each light, with the flags
-    // of the near side. A light behind the surface leaves it unlit.
+    // of the near side. A light behind the surface leaves it unlit. A
+    // shadowless light keeps its full colour (shading alone decides, as in a
+    // build without shadows).
     LightScaleFx scale(cs.lights.size(), {kColorOne, kColorOne, kColorOne});
     if (fx.shadows) {
         for (size_t k = 0; k < cs.lights.size(); ++k) {
+            if (cs.lights[k].shadowless) continue;
             std::array<i64, 3> lv;
             for (int i = 0; i < 3; ++i) lv[i] = cs.lights[k].pos_fx[i] - p[i];
             i128 nl = 0;
@@ -278,6 +283,7 @@ std::array<double, 3> trace_colour_d(const CompiledScene& cs, const RayD& ray, c
     LightScaleD scale(cs.lights.size(), {1.0, 1.0, 1.0});
     if (fx.shadows) {
         for (size_t k = 0; k < cs.lights.size(); ++k) {
+            if (cs.lights[k].shadowless) continue;
             const glm::dvec3 lv = cs.lights[k].pos - p;
             scale[k] = glm::dot(n, lv) <= 0.0 ? std::array<double, 3>{0, 0, 0}
                                                : shadow_d(cs, p, lv, tr.flags_before, ties, fx);

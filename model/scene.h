@@ -106,6 +106,7 @@ struct Light {
     SourcePos pos;
     glm::dvec3 location{0.0};
     glm::dvec3 color{1.0};
+    bool shadowless = false;       // POV-Ray's shadowless: no shadow rays to this light
 };
 
 struct Scene {

@@ -51,6 +51,7 @@ std::vector<uint32_t> encode_scene_image(const CompiledScene& cs) {
     for (const LightInfo& l : cs.lights) {
         for (i64 v : l.pos_fx) put32(w, v);
         for (i64 v : l.color_fx) put32(w, v);
+        w.push_back(l.shadowless ? kLightShadowless : 0);
     }
     w[H_OFF_MATERIALS] = uint32_t(w.size());
     for (size_t m = 1; m < cs.materials.size(); ++m) {
@@ -101,6 +102,7 @@ CompiledScene decode_scene_image(const std::vector<uint32_t>& w) {
     for (LightInfo& l : cs.lights) {
         for (i64& v : l.pos_fx) v = get32(w, i);
         for (i64& v : l.color_fx) v = get32(w, i);
+        l.shadowless = (w.at(i++) & kLightShadowless) != 0;
     }
     i = w[H_OFF_MATERIALS];
     cs.materials.resize(w[H_MATERIALS]);

@@ -12,7 +12,7 @@
 namespace csgrt {
 
 constexpr uint32_t kSceneMagic = 0x52475343;   // "CSGR" little-endian
-constexpr uint32_t kSceneVersion = 1;
+constexpr uint32_t kSceneVersion = 2;   // 2: a light has a flags word (shadowless)
 
 // Header word indices.
 enum SceneHeader {
@@ -21,7 +21,8 @@ enum SceneHeader {
     H_OFF_PROGRAM, H_OFF_TREE, H_TOTAL, kHeaderWords
 };
 constexpr int kCameraWords = 3 + 3 * 3 * 2 + 3;   // origin, base/dx/dy (2 words each), background
-constexpr int kLightWords = 6;                    // position, colour
+constexpr int kLightWords = 7;                    // position, colour, flags
+constexpr uint32_t kLightShadowless = 1;         // light flags bit 0: casts no shadows
 constexpr int kMaterialWords = 10;                // rgb, filter, ambient, diffuse, phong, reflection, ior, phong_size
 constexpr int kLeafWords = kNumCoefs + 1;         // coefficients, material
 

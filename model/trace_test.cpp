@@ -429,6 +429,18 @@ TEST(SceneImage, RoundTripRendersIdentically) {
     }
 }
 
+TEST(SceneImage, KeepsTheLightFlags) {
+    CompileOptions o;
+    const CompiledScene cs = compile_scene(parse_scene_string(
+        "light_source { <1, 5, -3> shadowless }\nlight_source { <-4, 2, -3> color rgb 0.5 }\n"
+        "sphere { 0, 1 pigment { color rgb 1 } }\n", "lights.pov"), o);
+    const CompiledScene back = decode_scene_image(encode_scene_image(cs));
+    ASSERT_EQ(back.lights.size(), 2u);
+    EXPECT_TRUE(back.lights[0].shadowless);
+    EXPECT_FALSE(back.lights[1].shadowless);
+    EXPECT_EQ(back.lights[1].color_fx, cs.lights[1].color_fx);
+}
+
 TEST(SceneImage, RejectsGarbage) {
     std::vector<uint32_t> w(20, 0);
     EXPECT_THROW(decode_scene_image(w), std::runtime_error);

@@ -9,12 +9,13 @@
 //
 //   trace -> miss (or a hit point out of range): add rnd(w background)
 //         -> hit: ask csgrt_spawn for the hit's children (a shadow ray per
-//            light, the transmitted ray or its total internal reflection,
+//            light that is not shadowless, the transmitted ray or its total internal reflection,
 //            the reflected ray); shadow rays go to the lanes, the others
 //            onto the context's stack; when every shadow ray
 //            has come back (each leaves the light's colour scaled by what
 //            got through, or 0), the hit is shaded (csgrt_shade with those
-//            light colours, csgrt_contrib) and rnd(w L) is added
+//            light colours, a shadowless light's own colour, csgrt_contrib)
+//            and rnd(w L) is added
 //   then the next ray from the stack, or the pixel is done.
 //
 // The sum of contributions does not depend on the order rays finish in,
@@ -65,6 +66,7 @@ module csgrt_raytree #(
     // configuration (steady during a frame)
     input  wire [$clog2(MAX_LIGHTS+1)-1:0] num_lights_i,
     input  wire [MAX_LIGHTS*48-1:0]  light_color_i,
+    input  wire [MAX_LIGHTS-1:0]     light_shadowless_i,   // no shadow rays: the light's own colour
     input  wire [3*16-1:0]           background_i,
     input  wire [7:0]                max_trace_i,      // global_settings max_trace_level
     // primary rays from the camera, raster order
@@ -377,10 +379,11 @@ module csgrt_raytree #(
     wire [KW-1:0] lc_k = lc_k_i[KW-1:0];
     generate
         if (SHADOWS != 0) begin : g_lc_shadows
-            assign lc_color_o = lcol_q[{lc_ctx, lc_k}];
+            // a shadowless light has no shadow ray and lights with its own colour
+            assign lc_color_o = light_shadowless_i[lc_k] ? light_color_i[lc_k * 48 +: 48] : lcol_q[{lc_ctx, lc_k}];
         end else begin : g_lc_plain
             assign lc_color_o = light_color_i[lc_k * 48 +: 48];
-            wire unused_lcx = ^{lc_ctx, lcol_q[0]};   // written for unlit lights only: unused
+            wire unused_lcx = ^{lc_ctx, lcol_q[0], light_shadowless_i};   // lcol_q: written for unlit lights only
         end
         if (NLW > KW) begin : g_lc_hi
             wire unused_lk = ^lc_k_i[NLW-1:KW];
@@ -396,7 +399,7 @@ module csgrt_raytree #(
     genvar g;
     generate
         for (g = 0; g < MAX_LIGHTS; g = g + 1) begin : g_mask
-            assign light_mask[g] = (SHADOWS != 0) && (g < num_lights_i);
+            assign light_mask[g] = (SHADOWS != 0) && (g < num_lights_i) && !light_shadowless_i[g];
         end
     endgenerate
     wire        h_colour_hit = h_hit && hp_in_range;

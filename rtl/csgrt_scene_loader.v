@@ -47,6 +47,7 @@ module csgrt_scene_loader #(
     // lights
     output reg  [MAX_LIGHTS*3*BITS-1:0] light_pos_o,
     output reg  [MAX_LIGHTS*3*16-1:0]   light_col_o,
+    output reg  [MAX_LIGHTS-1:0]        light_shadowless_o,   // flags bit 0: no shadow rays to it
     // classification tree: operator per heap position, material per slot
     output reg  [2*SLOTS-1:0]         node_op_o,
     output reg  [8*SLOTS-1:0]         slot_material_o,
@@ -85,8 +86,8 @@ module csgrt_scene_loader #(
                H_MATERIALS = 6, H_LIGHTS = 7, H_MAX_TRACE = 8, H_OFF_CAMERA = 10,
                H_OFF_LIGHTS = 11, H_OFF_MATERIALS = 12, H_OFF_LEAVES = 13, H_OFF_PROGRAM = 14,
                H_OFF_TREE = 15, H_TOTAL = 16, HEADER_WORDS = 17;
-    localparam [31:0] MAGIC = 32'h52475343, VERSION = 32'd1;
-    localparam LEAF_WORDS = 11, MATERIAL_WORDS = 10, LIGHT_WORDS = 6;
+    localparam [31:0] MAGIC = 32'h52475343, VERSION = 32'd2;
+    localparam LEAF_WORDS = 11, MATERIAL_WORDS = 10, LIGHT_WORDS = 7;
 
     assign word_ready_o = 1'b1;
 
@@ -141,6 +142,7 @@ module csgrt_scene_loader #(
             slot_used_o  <= {SLOTS{1'b0}};
             mat_clear_o  <= {{255{1'b0}}, 1'b1};   // air lets rays through; materials as they load
             num_lights_o <= 4'd0;
+            light_shadowless_o <= {MAX_LIGHTS{1'b0}};
             // until the header arrives every section lies beyond any index
             off_camera_q <= 32'hffff_ffff; off_lights_q <= 32'hffff_ffff; off_materials_q <= 32'hffff_ffff;
             off_leaves_q <= 32'hffff_ffff; off_program_q <= 32'hffff_ffff; off_tree_q <= 32'hffff_ffff;
@@ -201,13 +203,14 @@ module csgrt_scene_loader #(
                     field_q <= field_q + 4'd1;
                 end
             end
-            // f_now < LIGHT_WORDS = 6 here: the field counter wraps at the section size
+            // f_now < LIGHT_WORDS = 7 here: the field counter wraps at the section size
             if (in_lights && it_now < MAX_LIGHTS) begin
                 for (j = 0; j < MAX_LIGHTS; j = j + 1) begin
                     for (f = 0; f < 3; f = f + 1)
                         if (it_now == j && f32 == f) light_pos_o[(j*3 + f) * BITS +: BITS] <= w[BITS-1:0];
                     for (f = 3; f < 6; f = f + 1)
                         if (it_now == j && f32 == f) light_col_o[(j*3 + f - 3) * 16 +: 16] <= w[15:0];
+                    if (it_now == j && f32 == 6) light_shadowless_o[j] <= w[0];
                 end
             end
             if (in_materials) begin

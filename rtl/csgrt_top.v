@@ -94,6 +94,7 @@ module csgrt_top #(
     wire [3*16-1:0]           background;
     wire [MAX_LIGHTS*3*BITS-1:0] light_pos;
     wire [MAX_LIGHTS*3*16-1:0]   light_col;
+    wire [MAX_LIGHTS-1:0]        light_shadowless;
     wire [2*SLOTS-1:0]        node_op;
     wire [8*SLOTS-1:0]        slot_material;
     wire [SLOTS-1:0]          slot_used;
@@ -119,6 +120,7 @@ module csgrt_top #(
         .max_trace_o (max_trace),
         .cam_origin_o (cam_origin), .cam_base_o (cam_base), .cam_dx_o (cam_dx), .cam_dy_o (cam_dy),
         .background_o (background), .light_pos_o (light_pos), .light_col_o (light_col),
+        .light_shadowless_o (light_shadowless),
         .node_op_o (node_op), .slot_material_o (slot_material), .slot_used_o (slot_used),
         .leaf_a_addr_i (leaf_a_addr), .leaf_a_coef_o (leaf_a_coef), .leaf_a_slot_o (leaf_a_slot),
         .leaf_b_addr_i (leaf_b_addr), .leaf_b_coef_o (leaf_b_coef),
@@ -415,7 +417,8 @@ module csgrt_top #(
             assign d_info    = {INFO_P{1'b0}};
 
             wire unused_eff = ^{hit_entering, l_to_q, l_near_q, l_after_q, l_run_q, mat[MAT_W-1:96], max_trace,
-                                l_from_q, ior_a, ior_b, mat_clear, leaf_c_coef};
+                                l_from_q, ior_a, ior_b, mat_clear, leaf_c_coef,
+                                light_shadowless};   // every light is unshadowed here
             csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE)) u_shade (
                 .clk_i, .rst_ni,
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
@@ -484,6 +487,7 @@ module csgrt_top #(
             ) u_raytree (
                 .clk_i, .rst_ni, .start_i (start),
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_color_i (light_col),
+                .light_shadowless_i (light_shadowless),
                 .background_i (background), .max_trace_i (max_trace),
                 .cam_valid_i (cam_valid), .cam_ready_o (cam_ready), .cam_x_i (cam_x), .cam_y_i (cam_y),
                 .cam_o_i (cam_o), .cam_d_i (cam_d),

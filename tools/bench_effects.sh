@@ -24,7 +24,7 @@ while [ $# -gt 0 ]; do
         *) SCENES+=("$1"); shift ;;
     esac
 done
-[ ${#SCENES[@]} -gt 0 ] || SCENES=(scenes/quadrics.pov scenes/basic.pov scenes/mirror.pov scenes/paper/fig08_reflect.pov scenes/glass.pov)
+[ ${#SCENES[@]} -gt 0 ] || SCENES=(scenes/studio.pov scenes/quadrics.pov scenes/basic.pov scenes/mirror.pov scenes/paper/fig08_reflect.pov scenes/glass.pov)
 
 make --no-print-directory model >/dev/null
 OUT=out/bench-effects

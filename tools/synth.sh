@@ -5,7 +5,7 @@
 #   tools/synth.sh [--bits 24] [--freq 100] [--baud 3000000] [--out out/synth]
 #                  [--tree-height 8] [--max-leaves 64] [--effects none|shadows|reflection|refraction|all]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
-#                  [--behavioural-mul]
+#                  [--behavioural-mul] [--router router1|router2]
 #
 # Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
 # with their input and output registers inside the block (rtl/csgrt_mul.v);
@@ -35,7 +35,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
-EFFECTS=none PER_MODULE=0 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
+EFFECTS=none PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
@@ -50,6 +50,7 @@ while [ $# -gt 0 ]; do
         --allow-timing-fail) ALLOW_FAIL=1; shift ;;
         --stop-after-synth) STOP_SYNTH=1; shift ;;
         --skip-synth) SKIP_SYNTH=1; shift ;;      # reuse OUT/csgrt.json (same BITS/FREQ/BAUD)
+        --router) ROUTER=$2; shift 2 ;;           # nextpnr's router (router1 took 2 h of 2.3 at BITS 16)
         *) echo "synth.sh: unknown argument $1" >&2; exit 1 ;;
     esac
 done
@@ -133,7 +134,7 @@ rm -f "$OUT/csgrt.config" "$OUT/csgrt.bit" "$OUT/nextpnr_report.json"
 set +e
 "$NEXTPNR" --85k --package CABGA381 --speed 6 --json "$OUT/csgrt.json" \
     --lpf rtl/board/ulx3s/ulx3s.lpf --lpf "$OUT/clock.lpf" --textcfg "$OUT/csgrt.config" \
-    --report "$OUT/nextpnr_report.json" --timing-allow-fail --seed 1 > "$OUT/nextpnr.log" 2>&1 &
+    --report "$OUT/nextpnr_report.json" --timing-allow-fail --seed 1 --router "$ROUTER" > "$OUT/nextpnr.log" 2>&1 &
 PNR_PID=$!
 while kill -0 $PNR_PID 2>/dev/null; do
     sleep 5

@@ -144,6 +144,12 @@ TEST(Frame, CsgMixAndRotated) {
     expect_pixel_exact("rotated", scene_file("rotated"), 40, 30, TiePolicy::Regular);
 }
 
+// every light shadowless: on an effect build the ray tree spawns no shadow
+// ray; on every build the loader reads the light flags word
+TEST(Frame, ShadowlessStudio) {
+    expect_pixel_exact("studio", scene_file("studio"), 40, 30, TiePolicy::Paper);
+}
+
 TEST(Frame, CoincidentSurfacesBothPolicies) {
     const Scene s = parse_scene_string(kCoincident, "coincident.pov");
     for (TiePolicy t : {TiePolicy::Paper, TiePolicy::Regular}) expect_pixel_exact("coincident", s, 48, 36, t);
@@ -177,6 +183,25 @@ TEST(FrameEffects, ShadowsAndReflectionOnTheEffectScenes) {
 TEST(FrameEffects, CoincidentFacesWithShadows) {
     expect_pixel_exact("fig06 (Fig. 6)", paper_file("fig06_add_shared"), 40, 30, TiePolicy::Paper);
     expect_pixel_exact("fig14 (Fig. 14)", paper_file("fig14_self_add"), 40, 30, TiePolicy::Regular);
+}
+
+// Shadowless lights (docs/effects.md): the ray tree sends no shadow ray to
+// them and shades with their own colour. Frame.ShadowlessStudio (every
+// light shadowless: the spawn unit gets an empty light mask) runs on these
+// builds too; here quadrics.pov with its fill light made shadowless mixes
+// both kinds in one hit.
+TEST(FrameEffects, ShadowlessLights) {
+    Scene mixed = scene_file("quadrics");
+    ASSERT_EQ(mixed.lights.size(), 2u);
+    mixed.lights[1].shadowless = true;
+    expect_pixel_exact("quadrics, fill light shadowless", mixed, 40, 30, TiePolicy::Regular);
+    // the check can fail: at this size the fill light's shadows show, so a
+    // build that cast them anyway would not match
+    RenderOptions ro;
+    ro.ties = TiePolicy::Regular;
+    const Frame a = render(decode_scene_image(compile_words(mixed, 40, 30)), ro),
+                b = render(decode_scene_image(compile_words(scene_file("quadrics"), 40, 30)), ro);
+    EXPECT_NE(a.rgb, b.rgb) << "the fill light casts no visible shadow at 40x30";
 }
 
 TEST(FrameEffects, BackPressureLosesNothing) {
