@@ -85,10 +85,11 @@
 // probe of an event at its predecessor's t); per ray max(1, issued tokens)
 // + 2 clocks with event_sort
 // (release -> next ray loaded), issued events = all of them on a miss, at
-// most hit index + TREE_HEIGHT + 1 on a hit; the same with SECONDARY = 1.
-// Handshake: valid/ready out through csgrt_skid; when a result is due and
-// the skid cannot take it the whole walker (tree included) stalls. No
-// combinational path from ready_i to ev_pop_o / ray_done_o. With LOOK_AHEAD
+// most hit index + TREE_HEIGHT + 2 on a hit; the same with SECONDARY = 1.
+// Handshake: valid/ready out through csgrt_skid; while the skid holds a
+// word (it cannot take another) the whole walker (tree included) stalls. No
+// combinational path from ready_i, nor from the tree's output, to ev_pop_o /
+// ray_done_o or the walker's clock enable. With LOOK_AHEAD
 // a ray in a run keeps issuing (its tokens after the run are dropped) and
 // a query stalls the walker until its answer (q_ready_i and a_valid_i reach
 // ev_pop_o / ray_done_o combinationally: the answerer must not depend on
@@ -214,7 +215,14 @@ module csgrt_walker #(
     wire [TW-1:0] w_t;
     wire [OW-1:0] w_rec;
     wire          sk_ready;
-    wire          ce = !(res && !sk_ready) && !la_stall;
+    // The clock enable of the walker, its tree and (through ev_pop_o and
+    // ray_done_o) the sorter's drain bank: the skid's ready (a register),
+    // not whether the tree's output makes a record this clock: that path
+    // (tree output -> result -> enable of every cell) was the critical path
+    // of the FPGA build. So the walker also pauses while the skid is full
+    // and no record is due, only under back-pressure. (With LOOK_AHEAD the
+    // wait for an answer, from the tree's output, stalls it too.)
+    wire          ce = sk_ready && !la_stall;
 
     // ---- issue --------------------------------------------------------------
     // The hit's surface (docs/numerics.md section 5): an event at the same t
@@ -228,7 +236,10 @@ module csgrt_walker #(
     reg  [NS-1:0] gfl_q;                      // flags before the current tie group
     reg           pr_q;                       // the head event's probe is issued
     wire [NS-1:0] fl_cur = seq_q ? fl1_q : fl0_q;
-    wire          stop   = done_q[seq_q] || (fin_hit && t_seq == seq_q);
+    // the ray has its result: stop issuing. From done_q alone (registered):
+    // in the clock its hit comes out of the tree one more token issues,
+    // which the tree's output drops (done_q is set by then).
+    wire          stop   = done_q[seq_q];
     wire          issue  = ce && act_q && !stop;
     wire          later  = ev_valid_i && gv_q && ev_t_i == gt_q;
     wire          probe  = later && !pr_q;
