@@ -53,7 +53,7 @@ module csgrt_top #(
     output wire [3:0]  load_error_o,    // csgrt_scene_loader's codes, 0: none
     // control
     input  wire        start_i,         // one-clock pulse after loaded_o
-    input  wire        ties_regular_i,  // tie policy: 0 paper, 1 regular
+    input  wire        ties_regular_i,  // tie policy: 0 paper, 1 regular (taken with start_i)
     output reg         busy_o,
     output reg         done_o,
     // pixels, raster order
@@ -135,6 +135,14 @@ module csgrt_top #(
     wire [11:0]       cam_x, cam_y;
     wire [3*BITS-1:0] cam_o, cam_d;
     wire              start = start_i && loaded_o && (load_error_o == 4'd0) && !busy_o;
+    // The tie policy of the frame, taken when it starts: the event sorter's
+    // keys (every cell's comparator) then depend on a register, not on an
+    // input pin (in Verilator, logic that hangs on an input is evaluated
+    // on every eval() call: it was a fifth of the simulation time).
+    reg               ties_regular_q;
+    always @(posedge clk_i)
+        if (!rst_ni) ties_regular_q <= 1'b0;
+        else if (start) ties_regular_q <= ties_regular_i;
 
     csgrt_camera #(.BITS(BITS)) u_camera (
         .clk_i, .rst_ni,
@@ -255,7 +263,7 @@ module csgrt_top #(
                 .LOOK_AHEAD(LA ? 1 : 0)
             ) u_walk (
                 .clk_i, .rst_ni,
-                .ties_regular_i, .node_op_i (node_op), .slot_mat_i (slot_material), .slot_used_i (slot_used),
+                .ties_regular_i (ties_regular_q), .node_op_i (node_op), .slot_mat_i (slot_material), .slot_used_i (slot_used),
                 .valid_i (l_res_valid[k]), .ready_o (l_res_ready[k]),
                 .slot_i (l_res_side[k*SIDE_W + LEAF_BITS +: TREE_HEIGHT]),
                 .leaf_i (l_res_side[k*SIDE_W +: LEAF_BITS]),
