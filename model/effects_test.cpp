@@ -22,6 +22,11 @@ CompiledScene compile_text(const std::string& text, int bits, int w = 64, int h 
     return compile_scene(parse_scene_string(text, "effects.pov"), o);
 }
 
+// Pixel i has another colour in a than in b.
+bool pixel_differs(const Frame& a, const Frame& b, size_t i) {
+    return a.rgb[3 * i] != b.rgb[3 * i] || a.rgb[3 * i + 1] != b.rgb[3 * i + 1] || a.rgb[3 * i + 2] != b.rgb[3 * i + 2];
+}
+
 // Fig. 8: a mirror sphere above a slab, lit from above: no other object can
 // occlude the sphere's lit side, and a convex sphere cannot see itself.
 const char* kFig8 =
@@ -98,8 +103,7 @@ TEST(Effects, Fig8ImageShadowsChangeNothingOnTheLitSide) {
         const Frame a = render(cs, on), b = render(cs, off);
         int sphere_same = 0, sphere_diff = 0, floor_shadowed = 0;
         for (size_t i = 0; i < a.hit_leaf.size(); ++i) {
-            const bool differ = a.rgb[3 * i] != b.rgb[3 * i] || a.rgb[3 * i + 1] != b.rgb[3 * i + 1] ||
-                                a.rgb[3 * i + 2] != b.rgb[3 * i + 2];
+            const bool differ = pixel_differs(a, b, i);
             if (a.hit_leaf[i] >= 0 && cs.leaves[a.hit_leaf[i]].what == "sphere") {
                 // shadows may only darken the side turned away from the light,
                 // where diffuse is zero anyway: the sphere must be identical
@@ -129,11 +133,11 @@ TEST(Effects, ShadowlessLightsCastNoShadow) {
     ASSERT_NE(at, std::string::npos);
     shadowless.replace(at, light.size(), "light_source { <-2, 6, -3> color rgb 1 shadowless }");
     const size_t sphere_at = shadowless.find("sphere {");
-    const std::string no_sphere = shadowless.substr(0, sphere_at) + "intersection { " +
+    const std::string empty_sphere = shadowless.substr(0, sphere_at) + "intersection { " +
                                   shadowless.substr(sphere_at) + " plane { y, -10 } }\n";
     for (int bits : {12, 16, 24, 32}) {
         const CompiledScene cs = compile_text(shadowless, bits), shadowed = compile_text(kFig8, bits),
-                            truth = compile_text(no_sphere, bits);
+                            truth = compile_text(empty_sphere, bits);
         EXPECT_FALSE(scene_effects(cs).shadows);
         EXPECT_TRUE(scene_effects(shadowed).shadows);
         EffectSet fx = scene_effects(cs);
@@ -150,12 +154,8 @@ TEST(Effects, ShadowlessLightsCastNoShadow) {
             if (a.hit_leaf[i] < 0 || cs.leaves[a.hit_leaf[i]].what == "sphere") continue;
             ASSERT_GE(t.hit_leaf[i], 0);
             ++floor;
-            auto differ = [&](const Frame& f) {
-                return f.rgb[3 * i] != t.rgb[3 * i] || f.rgb[3 * i + 1] != t.rgb[3 * i + 1] ||
-                       f.rgb[3 * i + 2] != t.rgb[3 * i + 2];
-            };
-            floor_diff += differ(a);
-            shadowed_diff += differ(sh);
+            floor_diff += pixel_differs(a, t, i);
+            shadowed_diff += pixel_differs(sh, t, i);
         }
         EXPECT_GT(floor, 500);
         EXPECT_EQ(floor_diff, 0) << bits << " bits: a shadowless light cast a shadow";

@@ -50,7 +50,7 @@ while [ $# -gt 0 ]; do
         --allow-timing-fail) ALLOW_FAIL=1; shift ;;
         --stop-after-synth) STOP_SYNTH=1; shift ;;
         --skip-synth) SKIP_SYNTH=1; shift ;;      # reuse OUT/csgrt.json (same BITS/FREQ/BAUD)
-        --router) ROUTER=$2; shift 2 ;;           # nextpnr's router (router1 took 2 h of 2.3 at BITS 16)
+        --router) ROUTER=$2; shift 2 ;;           # nextpnr's router (router2 diverged at BITS 12: docs/fpga.md)
         *) echo "synth.sh: unknown argument $1" >&2; exit 1 ;;
     esac
 done
