@@ -168,8 +168,7 @@ bool frames_equal(const Frame& a, const Frame& b) {
 int count_diff(const Frame& a, const Frame& b) {
     int n = 0;
     for (size_t i = 0; i < a.hit_leaf.size(); ++i)
-        n += a.rgb[3 * i] != b.rgb[3 * i] || a.rgb[3 * i + 1] != b.rgb[3 * i + 1] || a.rgb[3 * i + 2] != b.rgb[3 * i + 2] ||
-             a.hit_leaf[i] != b.hit_leaf[i] || a.material[i] != b.material[i];
+        n += a.rgb_differs(b, i) || a.hit_leaf[i] != b.hit_leaf[i] || a.material[i] != b.material[i];
     return n;
 }
 

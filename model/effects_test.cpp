@@ -22,11 +22,6 @@ CompiledScene compile_text(const std::string& text, int bits, int w = 64, int h 
     return compile_scene(parse_scene_string(text, "effects.pov"), o);
 }
 
-// Pixel i has another colour in a than in b.
-bool pixel_differs(const Frame& a, const Frame& b, size_t i) {
-    return a.rgb[3 * i] != b.rgb[3 * i] || a.rgb[3 * i + 1] != b.rgb[3 * i + 1] || a.rgb[3 * i + 2] != b.rgb[3 * i + 2];
-}
-
 // Fig. 8: a mirror sphere above a slab, lit from above: no other object can
 // occlude the sphere's lit side, and a convex sphere cannot see itself.
 const char* kFig8 =
@@ -103,7 +98,7 @@ TEST(Effects, Fig8ImageShadowsChangeNothingOnTheLitSide) {
         const Frame a = render(cs, on), b = render(cs, off);
         int sphere_same = 0, sphere_diff = 0, floor_shadowed = 0;
         for (size_t i = 0; i < a.hit_leaf.size(); ++i) {
-            const bool differ = pixel_differs(a, b, i);
+            const bool differ = a.rgb_differs(b, i);
             if (a.hit_leaf[i] >= 0 && cs.leaves[a.hit_leaf[i]].what == "sphere") {
                 // shadows may only darken the side turned away from the light,
                 // where diffuse is zero anyway: the sphere must be identical
@@ -154,8 +149,8 @@ TEST(Effects, ShadowlessLightsCastNoShadow) {
             if (a.hit_leaf[i] < 0 || cs.leaves[a.hit_leaf[i]].what == "sphere") continue;
             ASSERT_GE(t.hit_leaf[i], 0);
             ++floor;
-            floor_diff += pixel_differs(a, t, i);
-            shadowed_diff += pixel_differs(sh, t, i);
+            floor_diff += a.rgb_differs(t, i);
+            shadowed_diff += sh.rgb_differs(t, i);
         }
         EXPECT_GT(floor, 500);
         EXPECT_EQ(floor_diff, 0) << bits << " bits: a shadowless light cast a shadow";

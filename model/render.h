@@ -58,6 +58,10 @@ struct Frame {
     std::vector<int16_t> hit_leaf;   // -1: background
     std::vector<uint8_t> material;   // material shown, 0: background
     bool is_object(int x, int y) const { return hit_leaf[size_t(y) * width + x] >= 0; }
+    // Pixel i (raster order) has another colour in `o` (any channel).
+    bool rgb_differs(const Frame& o, size_t i) const {
+        return rgb[3 * i] != o.rgb[3 * i] || rgb[3 * i + 1] != o.rgb[3 * i + 1] || rgb[3 * i + 2] != o.rgb[3 * i + 2];
+    }
 };
 
 // Primary ray of pixel (x, y) (numerics.md section 2).

@@ -47,9 +47,7 @@ const char* kStage =
 
 int count_diff(const Frame& a, const Frame& b) {
     int n = 0;
-    for (size_t i = 0; i < a.rgb.size() / 3; ++i)
-        if (a.rgb[3 * i] != b.rgb[3 * i] || a.rgb[3 * i + 1] != b.rgb[3 * i + 1] || a.rgb[3 * i + 2] != b.rgb[3 * i + 2])
-            ++n;
+    for (size_t i = 0; i < a.rgb.size() / 3; ++i) n += a.rgb_differs(b, i);
     return n;
 }
 
