@@ -91,7 +91,7 @@ COLUMNS = [
     "cycles_per_frame", "cycles_per_pixel", "rays_per_pixel", "isect_utilisation", "sim_wall_s",
     "sim_cycles_per_s", "rtl_matched", "rtl_pixels", "sim_load",
     # synthesis (exact method only; empty when not run)
-    "synth_config", "synth_status", "fmax_mhz", "lut4", "ff", "mult18x18d", "bram", "area_source",
+    "synth_config", "synth_status", "synth_commit", "fmax_mhz", "lut4", "ff", "mult18x18d", "bram", "area_source",
     # projection to a frame_size frame at Fmax
     "frame_cycles_proj", "frame_ms", "fps",
     # image error against the double reference (error_size frame)
@@ -147,6 +147,17 @@ def commit():
     try:
         _, head, _ = run(["git", "rev-parse", "--short", "HEAD"])
         _, st, _ = run(["git", "status", "--porcelain", "--", "rtl", "model", "sim", "tools/synth.sh"])
+        return head.strip() + ("+dirty" if st.strip() else "")
+    except Exception:
+        return ""
+
+
+def rtl_commit():
+    """The last commit that changed the synthesised sources (rtl/, tools/synth.sh), +dirty when the
+    working tree differs from it: what a synthesis run started now builds."""
+    try:
+        _, head, _ = run(["git", "log", "-1", "--format=%h", "--", "rtl", "tools/synth.sh"])
+        _, st, _ = run(["git", "status", "--porcelain", "--", "rtl", "tools/synth.sh"])
         return head.strip() + ("+dirty" if st.strip() else "")
     except Exception:
         return ""
@@ -361,6 +372,8 @@ def synth(bits, a):
         # a synth.sh run already in the directory (e.g. started by hand with --out there): read, not redone
         s = read_synth(out, config, a.stop_after_synth, 0, 0)
         if s is not None:
+            # the RTL of that run is taken to be the tree's now (the run was started on it)
+            s["rtl_commit"] = rtl_commit()
             log(f"BITS={bits}: synthesis {tag}: read from the synth.sh run already in {out} ({s['status']})")
             with open(summary, "w") as f:
                 json.dump(s, f, indent=1)
@@ -377,6 +390,7 @@ def synth(bits, a):
     cmd += a.synth_args.split()
     log(f"BITS={bits}: synthesis ({config}): {' '.join(cmd)} (10-30 minutes)")
     t0 = time.time()
+    synth_rtl = rtl_commit()
     p = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     for line in p.stdout:            # synth.sh's own progress lines
         print("    " + line.rstrip(), flush=True)
@@ -385,6 +399,7 @@ def synth(bits, a):
     if s is None:
         s = {"config": config, "fmax_mhz": None, "lut4": None, "ff": None, "mult18x18d": None, "bram": None,
              "area_source": "", "status": f"synth.sh failed ({rc})"}
+    s["rtl_commit"] = synth_rtl
     if not s["status"].startswith("synth.sh failed"):
         # a result (also "does not fit") is kept; a tool failure is tried again next time
         with open(summary, "w") as f:
@@ -593,7 +608,8 @@ def synth_missing(r, a=None, syn=None):
 
 
 def fill_synth(r, syn, frame_size):
-    r.update(synth_config=syn["config"], synth_status=syn["status"], fmax_mhz=fmt(syn["fmax_mhz"]),
+    r.update(synth_config=syn["config"], synth_status=syn["status"], synth_commit=syn.get("rtl_commit", ""),
+             fmax_mhz=fmt(syn["fmax_mhz"]),
              lut4=fmt(syn["lut4"]), ff=fmt(syn["ff"]), mult18x18d=fmt(syn["mult18x18d"]), bram=fmt(syn["bram"]),
              area_source=syn["area_source"])
     if syn["fmax_mhz"] and r.get("frame_cycles_proj") not in ("", None):
@@ -808,6 +824,14 @@ def cell(r, c, digits=None, scale=1.0):
     return f"{v:,.{digits}f}"
 
 
+def synth_commit_of(r):
+    """The commit whose RTL a row's synthesis figures are of: recorded since the column exists; before,
+    the synthesis ran in the sweep that wrote the row, at the row's commit."""
+    if not r.get("synth_status"):
+        return "—"
+    return r.get("synth_commit") or r.get("commit") or "—"
+
+
 def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, frame, fronts, plots, rel, a):
     L = []
     add = L.append
@@ -837,7 +861,9 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
         "pixels and spreads the pipeline's fill over more of them, so it is an estimate, not a measurement).")
     configs = sorted({r["synth_config"] for r in exact if r.get("synth_config")})
     add("- **Synthesis.** tools/synth.sh (yosys synth_ecp5, nextpnr-ecp5 for the ULX3S LFE5U-85F): Fmax of "
-        "the core clock, LUT4, FF, MULT18X18D, DP16KD. Frame time = projected cycles / Fmax. " +
+        "the core clock, LUT4, FF, MULT18X18D, DP16KD. Frame time = projected cycles / Fmax. *RTL synthesised*: "
+        "the commit of the RTL those figures are of (a width's synthesis and its RTL simulation can be of "
+        "different commits; docs/fpga.md says what changed between them). " +
         (f"Configurations: {'; '.join('`' + c + '`' for c in configs)}. " if configs else "") +
         ("**The synthesised core lacks the effect units the simulation had** (synth.sh --effects none, the "
          "configuration that fits the 85F): its Fmax and area are of a smaller core; the frame times combine "
@@ -871,10 +897,11 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
 
     # hardware per width
     add("## Per width\n")
-    add("| BITS | isect latency | Fmax MHz | LUT4 | FF | MULT18X18D | BRAM | area source | synthesis | violations exact | "
+    add("| BITS | isect latency | Fmax MHz | LUT4 | FF | MULT18X18D | BRAM | area source | synthesis | RTL synthesised | "
+        "violations exact | "
         "violations epsilon | thin-shell rays below resolution | worst PSNR exact dB | worst PSNR exact, primary | "
         "worst PSNR epsilon, primary |")
-    add("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    add("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for b in bits_all:
         e = [r for r in exact if int(r["bits"]) == b]
         p = [r for r in rows if int(r["bits"]) == b and r["method"] == "epsilon"]
@@ -887,7 +914,8 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
         c = (lambda col, d=None: cell(rr, col, d)) if e else (lambda col, d=None: "—")
         add(f"| {b} | {c('isect_latency')} | {c('fmax_mhz', 1)} | {c('lut4')} | {c('ff')} | {c('mult18x18d')} | "
             f"{c('bram')} | {(rr.get('area_source') or '—').split(' ')[0] if e else '—'} | "
-            f"{(rr.get('synth_status') or 'not run') if e else '—'} | {c('violations_suite')} | "
+            f"{(rr.get('synth_status') or 'not run') if e else '—'} | {synth_commit_of(rr) if e else '—'} | "
+            f"{c('violations_suite')} | "
             f"{cell(p[0], 'violations_suite') if p else '—'} | {c('below_resolution_rays')} | {worst_psnr(e, 'psnr_db')} | "
             f"{worst_psnr(e, 'psnr_primary_db')} | {worst_psnr(p, 'psnr_primary_db')} |")
     add("")
