@@ -68,6 +68,12 @@
 // with the look-behind), since c at the child's origin is quadric_at_fx()
 // at the hit point.
 //
+// ev_same_t_o: the head event's t equals the t of the event popped before
+// it in the same ray (0 for a ray's first event): a register, set with
+// each pop from the two head cells, so the walker's tie-group decision
+// (csgrt_walker's `later`) needs no t comparator on its way to ev_pop_i,
+// which fans out to every drain cell.
+//
 // Latency: a leaf result accepted at edge k is in the fill bank after edge
 // k+1; a ray whose last leaf is accepted at edge k is on the drain side
 // (ray_valid_o) after edge k+2 if the drain bank is free. The same with
@@ -124,6 +130,7 @@ module csgrt_event_sort #(
     output wire [LEAF_BITS-1:0]     ev_leaf_o,
     output wire [TREE_HEIGHT-1:0]   ev_slot_o,
     output wire                     ev_entering_o,
+    output wire                     ev_same_t_o,      // its t equals the ray's previously popped event's
     input  wire                     ev_pop_i
 );
 
@@ -245,6 +252,10 @@ module csgrt_event_sort #(
     assign ev_leaf_o     = head[H+1 +: LB];
     assign ev_slot_o     = head[1 +: H];
     assign ev_entering_o = head[0];
+    // the head's t against the next cell's: the same-t bit after a pop
+    reg  same_t_q;
+    wire next_same_t = drain_q[1][DW-1 -: UW] == head[DW-1 -: UW];
+    assign ev_same_t_o = same_t_q;
 
     // ---- secondary rays: info stream, t limit, inherited flags, look-behind
     localparam LBK = LOOK_BEHIND;
@@ -346,8 +357,10 @@ module csgrt_event_sort #(
             dcnt_q   <= fcnt_q;
             dflags_q <= fflags_q;
             dpay_q   <= fpay_q;
+            same_t_q <= 1'b0;
         end else if (pop) begin
-            dcnt_q  <= dcnt_q - 1'b1;
+            dcnt_q   <= dcnt_q - 1'b1;
+            same_t_q <= next_same_t;
         end
         if (!rst_ni) begin
             s1_valid_q <= 1'b0;

@@ -121,6 +121,7 @@ module csgrt_walker #(
     input  wire [LEAF_BITS-1:0]     ev_leaf_i,
     input  wire [TREE_HEIGHT-1:0]   ev_slot_i,
     input  wire                     ev_entering_i,
+    input  wire                     ev_same_t_i,   // ev_t_i equals the ray's previous popped event's (csgrt_event_sort)
     output wire                     ev_pop_o,
     // hit records
     output wire                     valid_o,
@@ -231,8 +232,7 @@ module csgrt_walker #(
     // group (gfl_q): its classification says whether crossing that event
     // alone from there is a border (the first member's own token says it).
     // A probe toggles nothing and is neither hit nor miss.
-    reg           gv_q;                       // the ray has issued an event (its t: gt_q)
-    reg  [TW-1:0] gt_q;
+    reg           gv_q;                       // the ray has issued an event
     reg  [NS-1:0] gfl_q;                      // flags before the current tie group
     reg           pr_q;                       // the head event's probe is issued
     wire [NS-1:0] fl_cur = seq_q ? fl1_q : fl0_q;
@@ -241,7 +241,9 @@ module csgrt_walker #(
     // which the tree's output drops (done_q is set by then).
     wire          stop   = done_q[seq_q];
     wire          issue  = ce && act_q && !stop;
-    wire          later  = ev_valid_i && gv_q && ev_t_i == gt_q;
+    // the event sorter compares the head's t with the previously popped
+    // event's (registered, ev_same_t_i): no comparator on the pop path
+    wire          later  = ev_valid_i && gv_q && ev_same_t_i;
     wire          probe  = later && !pr_q;
     wire [NS-1:0] fl_tok = probe ? gfl_q : fl_cur;   // the flags the token is classified with
     wire          skip   = !ev_valid_i || (fl_tok[ev_slot_i] == ev_entering_i);
@@ -295,7 +297,6 @@ module csgrt_walker #(
                 pr_q <= 1'b0;
                 if (ev_valid_i) begin
                     gv_q <= 1'b1;
-                    gt_q <= ev_t_i;
                     if (!later) gfl_q <= fl_cur;
                 end
             end
