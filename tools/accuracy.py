@@ -38,7 +38,10 @@ already in the CSV that lack the synthesis columns get only those (no
 simulation, no model run); a run that places and routes (no
 --stop-after-synth) replaces a row's yosys-only area; a synth.sh run already
 in out/accuracy/synth/<tag>/ (e.g. started by hand with --out there) is read,
-not redone. For the synthesis columns alone, e.g.:
+not redone. The commit of the synthesised RTL goes to the CSV's synth_commit:
+the sweep writes it to <tag>/rtl_commit.txt when it starts synth.sh; for a run
+started by hand, write the RTL's commit there (else the tree's at reading
+time is taken). For the synthesis columns alone, e.g.:
 
     tools/accuracy.py run --bits 12,20 --synth-tree-height 7 --synth-effects none \
                       --synth-freq 50 --stop-after-synth    # yosys area (b<B>_h7_fxnone_f50_yosys)
@@ -372,8 +375,10 @@ def synth(bits, a):
         # a synth.sh run already in the directory (e.g. started by hand with --out there): read, not redone
         s = read_synth(out, config, a.stop_after_synth, 0, 0)
         if s is not None:
-            # the RTL of that run is taken to be the tree's now (the run was started on it)
-            s["rtl_commit"] = rtl_commit()
+            # the RTL of that run: OUT/rtl_commit.txt when whoever started it wrote one, else the
+            # tree's now (the run is taken to be of it)
+            rc_path = os.path.join(out, "rtl_commit.txt")
+            s["rtl_commit"] = (open(rc_path).read().strip() if os.path.exists(rc_path) else rtl_commit())
             log(f"BITS={bits}: synthesis {tag}: read from the synth.sh run already in {out} ({s['status']})")
             with open(summary, "w") as f:
                 json.dump(s, f, indent=1)
@@ -391,6 +396,8 @@ def synth(bits, a):
     log(f"BITS={bits}: synthesis ({config}): {' '.join(cmd)} (10-30 minutes)")
     t0 = time.time()
     synth_rtl = rtl_commit()
+    with open(os.path.join(out, "rtl_commit.txt"), "w") as f:
+        f.write(synth_rtl + "\n")
     p = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     for line in p.stdout:            # synth.sh's own progress lines
         print("    " + line.rstrip(), flush=True)
