@@ -72,10 +72,13 @@ module csgrt_class_tree #(
         end
     endgenerate
 
-    // node levels: node i (heap order) holds its classification in
-    // node_q[i], registered; its children are nodes 2i, 2i+1 or, on the
-    // lowest level, the slot classes 2i-NS, 2i+1-NS
-    (* mem2reg *) reg  [CW-1:0] node_q [1:NS-1];
+    // node levels: node i (heap order) holds its classification in its
+    // register g_node[i].node_q, seen by its parent as node_w[i]; its
+    // children are nodes 2i, 2i+1 or, on the lowest level, the slot classes
+    // 2i-NS, 2i+1-NS. (One register per generate block rather than an
+    // array written element by element: the Verilator model writes each
+    // as a variable of its own, without a delayed-assignment flag.)
+    wire [CW-1:0] node_w [1:NS-1];
     wire [CW-1:0] node_d [1:NS-1];
     generate
         for (i = 1; i < NS; i = i + 1) begin : g_node
@@ -84,13 +87,15 @@ module csgrt_class_tree #(
                 assign l = leaf_c[2*i-NS];
                 assign r = leaf_c[2*i+1-NS];
             end else begin : g_up
-                assign l = node_q[2*i];
-                assign r = node_q[2*i+1];
+                assign l = node_w[2*i];
+                assign r = node_w[2*i+1];
             end
             csgrt_class_node #(.MAT_BITS(MB)) u_node (
                 .op_i(node_op_i[2*i +: 2]), .l_i(l), .r_i(r), .c_o(node_d[i]));
+            reg [CW-1:0] node_q;
             always @(posedge clk_i)
-                if (ce_i) node_q[i] <= node_d[i];
+                if (ce_i) node_q <= node_d[i];
+            assign node_w[i] = node_q;
         end
         if (H < 1) begin : g_bad_param
             initial begin
@@ -104,7 +109,7 @@ module csgrt_class_tree #(
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i),
         .valid_i(valid_i), .data_i(tag_i), .valid_o(valid_o), .data_o(tag_o));
 
-    assign class_o = node_q[1];
+    assign class_o = node_w[1];
 
     wire unused_cfg = ^node_op_i[1:0];
 

@@ -17,11 +17,13 @@ module csgrt_delay #(
     output wire [WIDTH-1:0] data_o
 );
 
-    // one word per stage (an array, not a flat STAGES x WIDTH vector, which
-    // the Verilator model would shift as a whole every clock); mem2reg:
-    // registers for yosys, not a memory
+    // one word per stage, each the register of its generate block, seen by
+    // the next stage through data_w (not a flat STAGES x WIDTH vector, which
+    // the Verilator model would shift as a whole every clock, nor an array
+    // written element by element, which costs it a delayed-assignment flag
+    // and value per element and clock)
     reg [STAGES-1:0] valid_q;
-    (* mem2reg *) reg [WIDTH-1:0]  data_q [0:STAGES-1];
+    wire [WIDTH-1:0] data_w [0:STAGES-1];
 
     genvar k;
     generate
@@ -37,11 +39,13 @@ module csgrt_delay #(
             end
         end
         for (k = 0; k < STAGES; k = k + 1) begin : g_stage
+            reg [WIDTH-1:0] data_q;
             if (k == 0) begin : g_first
-                always @(posedge clk_i) if (ce_i) data_q[0] <= data_i;
+                always @(posedge clk_i) if (ce_i) data_q <= data_i;
             end else begin : g_next
-                always @(posedge clk_i) if (ce_i) data_q[k] <= data_q[k-1];
+                always @(posedge clk_i) if (ce_i) data_q <= data_w[k-1];
             end
+            assign data_w[k] = data_q;
         end
         if (WIDTH < 1 || STAGES < 1) begin : g_bad_param
             initial begin
@@ -52,7 +56,7 @@ module csgrt_delay #(
     endgenerate
 
     assign valid_o = valid_q[STAGES-1];
-    assign data_o  = data_q[STAGES-1];
+    assign data_o  = data_w[STAGES-1];
 
 endmodule
 

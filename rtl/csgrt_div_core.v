@@ -81,13 +81,13 @@ module csgrt_div_core #(
     // or LUT RAM on the FPGA rather than QB + 1 copies in flip-flops).
     localparam SW = DW + QB + 2;        // side word width
 
-    // Each stage's registers are words of their own (arrays, not one flat
-    // vector per kind): Verilator then moves each word by itself instead of
-    // shifting QB-word vectors every clock.
+    // Each stage's registers are plain registers of its generate block, seen
+    // by the next stage through the wire arrays below (csgrt_sqrt_core says
+    // why: the Verilator model writes them as variables of their own).
     reg  [QB-1:0] valid_q;
-    (* mem2reg *) reg  [DW-1:0] rem_q  [0:QB-1];
-    (* mem2reg *) reg  [QB-1:0] quot_q [0:QB-1];
-    (* mem2reg *) reg  [SW-1:0] side_q [0:QB-1];
+    wire [DW-1:0] rem_w  [0:QB-1];
+    wire [QB-1:0] quot_w [0:QB-1];
+    wire [SW-1:0] side_w [0:QB-1];
 
     wire [SW-1:0] side0 = {s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
 
@@ -111,9 +111,9 @@ module csgrt_div_core #(
                 assign quot_in = {QB{1'b0}};
                 assign side_in = side0;
             end else begin : g_next
-                assign rem_in  = rem_q[k-1];
-                assign quot_in = quot_q[k-1];
-                assign side_in = side_q[k-1];
+                assign rem_in  = rem_w[k-1];
+                assign quot_in = quot_w[k-1];
+                assign side_in = side_w[k-1];
             end
             wire [DW-1:0] ud_in   = side_in[DW-1:0];
             wire [QB-1:0] lo_in   = side_in[DW +: QB];
@@ -125,18 +125,24 @@ module csgrt_div_core #(
             // quot_in < 2^k <= 2^(QB-1): its top bit is zero
             wire          unused_quot_top = quot_in[QB-1];
 
+            reg [DW-1:0] rem_q;
+            reg [QB-1:0] quot_q;
+            reg [SW-1:0] side_q;
             always @(posedge clk_i)
                 if (ce_i) begin
-                    rem_q[k]  <= rem_nx[DW-1:0];
-                    quot_q[k] <= {quot_in[QB-2:0], take};
-                    side_q[k] <= side_in;
+                    rem_q  <= rem_nx[DW-1:0];
+                    quot_q <= {quot_in[QB-2:0], take};
+                    side_q <= side_in;
                 end
+            assign rem_w[k]  = rem_q;
+            assign quot_w[k] = quot_q;
+            assign side_w[k] = side_q;
         end
     endgenerate
 
-    wire [SW-1:0] side_last = side_q[QB-1];
+    wire [SW-1:0] side_last = side_w[QB-1];
     assign valid_o = valid_q[QB-1];
-    assign quot_o  = quot_q[QB-1];
+    assign quot_o  = quot_w[QB-1];
     assign neg_o   = side_last[DW+QB];
     assign ovf_o   = side_last[DW+QB+1];
 
@@ -145,7 +151,7 @@ module csgrt_div_core #(
     );
 
     // the last stage's remainder, |d| and numerator bits are not needed
-    wire unused_last = ^{rem_q[QB-1], side_last[DW+QB-1:0]};
+    wire unused_last = ^{rem_w[QB-1], side_last[DW+QB-1:0]};
 
     generate
         if (NUM_WIDTH <= QUOT_BITS || DEN_WIDTH < 2 || QUOT_BITS < 2 || USER_WIDTH < 1) begin : g_bad_param

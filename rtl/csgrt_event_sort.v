@@ -177,14 +177,18 @@ module csgrt_event_sort #(
     reg [PAYLOAD_WIDTH-1:0] s1_pay_q;
 
     // ---- banks ------------------------------------------------------------
-    // The banks are arrays of cells (one DW-bit word each), not flat N x DW
-    // vectors: the Verilator model then moves each cell as a word of its own.
-    (* mem2reg *) reg [DW-1:0]            fill_q [0:N-1];   // sorted, cells 0 .. fcnt-1 valid
+    // The banks are cells of one DW-bit word each, not flat N x DW vectors:
+    // each cell is a register of its own in g_cell (fill_q, drain_q), seen
+    // by its neighbours through the wire arrays fill_w and drain_w, so that
+    // the Verilator model writes each cell as a variable of its own (array
+    // elements written one per always block each cost a delayed-assignment
+    // flag and value per clock).
+    wire [DW-1:0]           fill_w [0:N-1];   // sorted, cells 0 .. fcnt-1 valid
     reg [NB-1:0]            fcnt_q;
     reg                     full_q;        // fill bank holds a complete ray
     reg [NS-1:0]            fflags_q;
     reg [PAYLOAD_WIDTH-1:0] fpay_q;
-    (* mem2reg *) reg [DW-1:0]            drain_q [0:N-1];  // sorted, cell 0 is the next event
+    wire [DW-1:0]           drain_w [0:N-1];  // sorted, cell 0 is the next event
     reg [NB-1:0]            dcnt_q;
     reg                     busy_q;        // drain bank holds a ray
     reg [NS-1:0]            dflags_q;
@@ -206,7 +210,8 @@ module csgrt_event_sort #(
     genvar j;
     generate
         for (j = 0; j < N; j = j + 1) begin : g_cell
-            wire [DW-1:0] cur  = fill_q[j];
+            reg  [DW-1:0] fill_q, drain_q;
+            wire [DW-1:0] cur  = fill_q;
             wire          here = j < base_cnt;
             wire [KW-1:0] k    = `CSGRT_KEY(cur);
             wire [DW-1:0] ins;                 // the cell's next word
@@ -217,26 +222,28 @@ module csgrt_event_sort #(
             end else if (j == 1) begin : g_second
                 assign ins = lt_a[1] ? cur :
                              lt_a[0] ? s1_a_q :
-                             lt_b[0] ? fill_q[0] : s1_b_q;
+                             lt_b[0] ? fill_w[0] : s1_b_q;
             end else begin : g_rest
                 assign ins = lt_a[j]   ? cur :
                              lt_a[j-1] ? s1_a_q :
-                             lt_b[j-1] ? fill_q[j-1] :
+                             lt_b[j-1] ? fill_w[j-1] :
                              lt_b[j-2] ? s1_b_q :
-                                         fill_q[j-2];
+                                         fill_w[j-2];
             end
             // the drain bank shifts towards cell 0 on a pop
             wire [DW-1:0] next_drain;
             if (j == N - 1) begin : g_end
                 assign next_drain = {DW{1'b0}};
             end else begin : g_shift
-                assign next_drain = drain_q[j+1];
+                assign next_drain = drain_w[j+1];
             end
             always @(posedge clk_i) begin
-                if (s1_adv) fill_q[j] <= ins;
-                if (handover) drain_q[j] <= fill_q[j];
-                else if (pop) drain_q[j] <= next_drain;
+                if (s1_adv) fill_q <= ins;
+                if (handover) drain_q <= fill_q;
+                else if (pop) drain_q <= next_drain;
             end
+            assign fill_w[j]  = fill_q;
+            assign drain_w[j] = drain_q;
         end
     endgenerate
 
@@ -247,14 +254,16 @@ module csgrt_event_sort #(
     assign ray_payload_o = dpay_q;
     assign ev_valid_o    = busy_q && dcnt_q != {NB{1'b0}};
     assign ev_last_o     = dcnt_q == {{(NB-1){1'b0}}, 1'b1};
-    wire [DW-1:0] head   = drain_q[0];
+    wire [DW-1:0] head   = drain_w[0];
     assign ev_t_o        = {1'b0, head[DW-1 -: UW]};
     assign ev_leaf_o     = head[H+1 +: LB];
     assign ev_slot_o     = head[1 +: H];
     assign ev_entering_o = head[0];
     // the head's t against the next cell's: the same-t bit after a pop
     reg  same_t_q;
-    wire next_same_t = drain_q[1][DW-1 -: UW] == head[DW-1 -: UW];
+    wire [DW-1:0] second = drain_w[1];     // only its t is compared
+    wire [DW-UW-1:0] unused_second = second[DW-UW-1:0];
+    wire next_same_t = second[DW-1 -: UW] == head[DW-1 -: UW];
     assign ev_same_t_o = same_t_q;
 
     // ---- secondary rays: info stream, t limit, inherited flags, look-behind

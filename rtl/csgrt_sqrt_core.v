@@ -34,12 +34,15 @@ module csgrt_sqrt_core #(
     localparam RW = R + 2;
 
     // Stage k reads the inputs (k = 0) or the registers of stage k-1 and
-    // writes its own; each stage's registers are words of their own (arrays,
-    // not one flat vector per kind), which Verilator moves word by word.
+    // writes its own. Each stage's registers are plain registers of its
+    // generate block, seen by the next stage through the wire arrays below,
+    // so that the Verilator model writes each as a variable of its own:
+    // array elements written one per always block each took a delayed-
+    // assignment flag and value per clock (most of the simulation's time).
     reg  [R-1:0]  valid_q;
-    (* mem2reg *) reg  [RW-1:0] rem_q  [0:R-1];
-    (* mem2reg *) reg  [R-1:0]  root_q [0:R-1];
-    (* mem2reg *) reg  [NW-1:0] n_q    [0:R-1];
+    wire [RW-1:0] rem_w  [0:R-1];
+    wire [R-1:0]  root_w [0:R-1];
+    wire [NW-1:0] n_w    [0:R-1];
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
@@ -61,9 +64,9 @@ module csgrt_sqrt_core #(
                 assign root_in  = {R{1'b0}};
                 assign n_in     = n_i;
             end else begin : g_in
-                assign rem_in   = rem_q[k-1];
-                assign root_in  = root_q[k-1];
-                assign n_in     = n_q[k-1];
+                assign rem_in   = rem_w[k-1];
+                assign root_in  = root_w[k-1];
+                assign n_in     = n_w[k-1];
             end
             // rem_in < 2^R: its two top bits are always zero
             wire [1:0]    unused_rem_top = rem_in[RW-1:RW-2];
@@ -73,12 +76,18 @@ module csgrt_sqrt_core #(
             // root_in < 2^k <= 2^(R-1): its top bit is always zero
             wire          unused_root_top = root_in[R-1];
 
+            reg [RW-1:0] rem_q;
+            reg [R-1:0]  root_q;
+            reg [NW-1:0] n_q;
             always @(posedge clk_i)
                 if (ce_i) begin
-                    rem_q[k]  <= take ? rem_sh - trial : rem_sh;
-                    root_q[k] <= {root_in[R-2:0], take};
-                    n_q[k]    <= n_in;
+                    rem_q  <= take ? rem_sh - trial : rem_sh;
+                    root_q <= {root_in[R-2:0], take};
+                    n_q    <= n_in;
                 end
+            assign rem_w[k]  = rem_q;
+            assign root_w[k] = root_q;
+            assign n_w[k]    = n_q;
         end
     endgenerate
 
@@ -89,10 +98,10 @@ module csgrt_sqrt_core #(
     );
 
     assign valid_o = valid_q[R-1];
-    assign root_o  = root_q[R-1];
+    assign root_o  = root_w[R-1];
 
     // the last stage's remainder and radicand copy are not needed
-    wire unused_last = ^{rem_q[R-1], n_q[R-1]};
+    wire unused_last = ^{rem_w[R-1], n_w[R-1]};
 
     generate
         if (RESULT_BITS < 2 || USER_WIDTH < 1) begin : g_bad_param
