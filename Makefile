@@ -47,7 +47,7 @@ help:
 	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [WIDTH=..] [HEIGHT=..]"
 	@echo "             run the RTL in Verilator; writes out/sim/<scene>.png and compares with the model"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
-	@echo "make synth [BITS=24] [EFFECTS=none|shadows|reflection|refraction|all] [FREQ=100] [BAUD=3000000]"
+	@echo "make synth [BITS=24] [EFFECTS=none|shadows|reflection|refraction|all] [SPECULAR=0] [FREQ=100] [BAUD=3000000]"
 	@echo "             ULX3S bitstream (yosys, nextpnr-ecp5, ecppack) to out/synth/; docs/fpga.md"
 	@echo "make lint    verilator --lint-only -Wall and yosys synthesis of every RTL module"
 	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
@@ -101,14 +101,17 @@ define VERILATE_TOP
 endef
 
 # the frame testbench: whole frames at 16 and 24 bits against the model, and
-# with two intersection lanes
+# with two intersection lanes; the two-lane builds are also the ones without
+# the specular unit (SPECULAR=0: every scene shaded without highlights, the
+# model likewise), so that both shading configurations are co-simulated
+# without a build of their own
 FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 $(BUILD)/tb/frame24u2 \
               $(BUILD)/tb/frame16fx $(BUILD)/tb/frame24fx $(BUILD)/tb/frame16fxu2
 FRAME_DEPS := $(RTL_SRC) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a
 $(BUILD)/tb/frame%: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,$*,tb/frame/tb_frame.cpp,-DFRAME_BITS=$* -DFRAME_UNITS=1,-lgtest -lgtest_main,1)
 $(BUILD)/tb/frame24u2: $(FRAME_DEPS) | deps
-	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=2,-lgtest -lgtest_main,2)
+	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=2 -DFRAME_SPECULAR=0,-lgtest -lgtest_main,2,-GSPECULAR=0)
 # with every effect unit (the ray tree: shadows, reflection, refraction)
 FX_UNITS := -GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1
 FX_DEFS  := -DFRAME_UNITS=1 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=1
@@ -118,25 +121,28 @@ $(BUILD)/tb/frame24fx: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS))
 # shadows and reflection with two intersection lanes (refraction needs one lane)
 $(BUILD)/tb/frame16fxu2: $(FRAME_DEPS) | deps
-	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 -DFRAME_UNITS=2 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=0,-lgtest -lgtest_main,2,-GSHADOWS=1 -GREFLECTION=1)
+	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 -DFRAME_UNITS=2 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=0 -DFRAME_SPECULAR=0,-lgtest -lgtest_main,2,-GSHADOWS=1 -GREFLECTION=1 -GSPECULAR=0)
 
 # make sim: the project's main job. The build has the effect units the
-# scene uses (`csgrt units`), or all of them (EFFECTS=all), or none; each
-# combination is its own cached Verilator build.
+# scene uses (`csgrt units`: shadows, reflection, refraction, specular
+# highlights), or all of them (EFFECTS=all), or none (EFFECTS=none: primary
+# rays, local shading with highlights); each combination is its own cached
+# Verilator build.
 SHADOWS    ?= 0
 REFLECTION ?= 0
 REFRACTION ?= 0
-SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)
+SPECULAR   ?= 1
+SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)
 SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
 $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION),--trace-fst)
+	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION) -DCSGRT_SPECULAR=$(SPECULAR),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION) -GSPECULAR=$(SPECULAR),--trace-fst)
 
 sim: model
-	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1 REFRACTION=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0 REFRACTION=0,$$($(BUILD)/csgrt units $(SCENE))))" \
-	    && if [ "$(UNITS)" != 1 ] && [ "$${units##*REFRACTION=}" = 1 ]; then \
+	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1 REFRACTION=1 SPECULAR=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0 REFRACTION=0 SPECULAR=1,$$($(BUILD)/csgrt units $(SCENE))))" \
+	    && if [ "$(UNITS)" != 1 ] && [ "$${units#*REFRACTION=1}" != "$$units" ]; then \
 	        echo "make sim: refraction works with one intersection lane for now: UNITS=$(UNITS) builds without it"; \
-	        units="$${units%REFRACTION=1}REFRACTION=0"; fi \
+	        units="$${units/REFRACTION=1/REFRACTION=0}"; fi \
 	    && echo "make sim: effect units $$units (EFFECTS=$(EFFECTS))" \
 	    && $(MAKE) --no-print-directory sim-run $$units
 
@@ -156,7 +162,7 @@ FREQ ?= 100
 BAUD ?= 3000000
 synth: deps
 	@tools/synth.sh --bits $(BITS) --effects $(if $(filter scene,$(EFFECTS)),none,$(EFFECTS)) \
-	    --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
+	    $(if $(filter 0,$(SPECULAR)),--no-specular) --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
 
 # the board top in Verilator with a UART model (tb/board/), built as the
 # FPGA build is (CSGRT_ECP5_DSP: csgrt_mul in MULT18X18D tiles): the ECP5
@@ -209,7 +215,7 @@ accuracy: model
 
 # the simulation build the sweep's smoke test in make test (tools/accuracy_test.py) runs
 accuracy-smoke: model
-	@$(MAKE) --no-print-directory $(BUILD)/sim/b16u1s1r1f1/csgrt_sim BITS=16 UNITS=1 SHADOWS=1 REFLECTION=1 REFRACTION=1
+	@$(MAKE) --no-print-directory $(BUILD)/sim/b16u1s1r1f1p1/csgrt_sim BITS=16 UNITS=1 SHADOWS=1 REFLECTION=1 REFRACTION=1 SPECULAR=1
 
 clean:
 	rm -rf $(BUILD) out

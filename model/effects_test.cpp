@@ -205,6 +205,40 @@ TEST(Effects, RefractedRaysCarryConsistentMedia) {
     }
 }
 
+TEST(Effects, WithoutTheSpecularUnitHighlightsAreGoneAndNothingElse) {
+    // A build without the specular unit (SPECULAR = 0) shades as if every
+    // phong were 0. Checked against the same scene written without phong
+    // (an independent route through the parser and compiler), with shadows
+    // and reflection on: the images must be identical, and must differ
+    // from the render with highlights (the check can fail).
+    std::string matte = kFig8;
+    const std::string phong = " phong 0.5";
+    matte.erase(matte.find(phong), phong.size());
+    for (int bits : {16, 24}) {
+        const CompiledScene cs = compile_text(kFig8, bits), plain = compile_text(matte, bits);
+        EXPECT_TRUE(scene_effects(cs).specular);
+        EXPECT_FALSE(scene_effects(plain).specular);
+        RenderOptions with, without;
+        with.effects = rtl_effects(cs, true, true, false, true);
+        without.effects = rtl_effects(cs, true, true, false, false);
+        EXPECT_FALSE(without.effects->specular);
+        const Frame a = render(cs, with), b = render(cs, without), ref = render(plain, with);
+        int highlights = 0, other = 0;
+        for (size_t i = 0; i < b.hit_leaf.size(); ++i) {
+            highlights += a.rgb_differs(b, i);
+            other += b.rgb_differs(ref, i);
+            // a highlight only adds light
+            for (int c = 0; c < 3; ++c) EXPECT_LE(b.rgb[i * 3 + c], a.rgb[i * 3 + c]);
+        }
+        EXPECT_GT(highlights, 10) << bits << " bits: the highlight is missing from the render with it";
+        EXPECT_EQ(other, 0) << bits << " bits: without the specular unit, pixels differ from the scene without phong";
+        // a scene without phong renders the same either way
+        without.effects = rtl_effects(plain, true, true, false, false);
+        const Frame c = render(plain, without);
+        EXPECT_EQ(c.rgb, ref.rgb);
+    }
+}
+
 TEST(Effects, ScenesReportTheEffectsTheyUse) {
     auto fx = [](const std::string& name) {
         CompileOptions o;

@@ -136,8 +136,8 @@ int main(int argc, char** argv) {
         const CompiledScene cs = compile_scene(scene, a.copt);
         if (a.cmd == "units") {
             const EffectSet fx = scene_effects(cs);
-            std::printf("SHADOWS=%d REFLECTION=%d REFRACTION=%d\n", int(fx.shadows), int(fx.reflection),
-                        int(fx.refraction));
+            std::printf("SHADOWS=%d REFLECTION=%d REFRACTION=%d SPECULAR=%d\n", int(fx.shadows), int(fx.reflection),
+                        int(fx.refraction), int(fx.specular));
             return 0;
         }
         if (a.cmd == "info") {

@@ -159,10 +159,10 @@ EffectSet scene_effects(const CompiledScene& cs) {
     return e;
 }
 
-EffectSet rtl_effects(const CompiledScene& cs, bool shadows, bool reflection, bool refraction) {
+EffectSet rtl_effects(const CompiledScene& cs, bool shadows, bool reflection, bool refraction, bool specular) {
     const EffectSet scene = scene_effects(cs);
     EffectSet e;
-    e.specular = scene.specular;
+    e.specular = specular && scene.specular;
     e.shadows = shadows && scene.shadows;
     e.reflection = reflection && scene.reflection;
     e.refraction = refraction && scene.refraction;

@@ -19,12 +19,12 @@ namespace csgrt {
 // The effects a scene uses (EffectSet is declared in render.h).
 EffectSet scene_effects(const CompiledScene& cs);
 
-// The effects an RTL build renders for a scene: local shading (phong
-// included) always, shadows, reflection and refraction when the build has
-// those units (csgrt_top's SHADOWS, REFLECTION, REFRACTION) and the scene
-// uses them. Co-simulation renders the model with these.
-EffectSet rtl_effects(const CompiledScene& cs, bool shadows = false, bool reflection = false,
-                      bool refraction = false);
+// The effects an RTL build renders for a scene: local shading always;
+// shadows, specular highlights (phong), reflection and refraction when the
+// build has those units (csgrt_top's SHADOWS, SPECULAR, REFLECTION,
+// REFRACTION) and the scene uses them. Co-simulation renders the model with
+// these (render() shades without highlights when specular is off).
+EffectSet rtl_effects(const CompiledScene& cs, bool shadows, bool reflection, bool refraction, bool specular);
 
 // Geometry of secondary rays (F fraction bits, docs/effects.md):
 // square-root stages for unit vectors of geometry vectors with |v_i| < 128

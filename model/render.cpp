@@ -215,7 +215,19 @@ PixelTrace render_pixel_fx(const CompiledScene& cs, int x, int y, TiePolicy ties
     return pt;
 }
 
-Frame render(const CompiledScene& cs, const RenderOptions& opt) {
+CompiledScene without_highlights(const CompiledScene& cs) {
+    CompiledScene matte = cs;
+    for (MaterialInfo& m : matte.materials) {
+        m.phong = 0;
+        m.finish.phong = 0.0;
+    }
+    return matte;
+}
+
+Frame render(const CompiledScene& scene, const RenderOptions& opt) {
+    const EffectSet fx = opt.effects ? *opt.effects : scene_effects(scene);
+    const CompiledScene matte = fx.specular ? CompiledScene() : without_highlights(scene);
+    const CompiledScene& cs = fx.specular ? scene : matte;
     Frame f;
     f.width = cs.width;
     f.height = cs.height;
@@ -223,7 +235,6 @@ Frame render(const CompiledScene& cs, const RenderOptions& opt) {
     f.rgb.assign(npix * 3, 0);
     f.hit_leaf.assign(npix, -1);
     f.material.assign(npix, 0);
-    const EffectSet fx = opt.effects ? *opt.effects : scene_effects(cs);
 
     auto do_row = [&](int y) {
         for (int x = 0; x < f.width; ++x) {

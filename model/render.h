@@ -33,7 +33,7 @@ constexpr int kShadeSqrtStages = 17;
 // RTL implements primary rays only so far).
 struct EffectSet {
     bool shadows = false;      // any light and any object
-    bool specular = false;     // any phong > 0 (part of local shading)
+    bool specular = false;     // any phong > 0: highlights (local shading; off: every phong taken as 0)
     bool reflection = false;   // any reflection > 0
     bool refraction = false;   // any filter > 0
     int depth = 1;             // ray-tree depth limit (max_trace_level) when rays spawn rays
@@ -98,6 +98,11 @@ std::array<double, 3> shade_d(const CompiledScene& cs, const RayD& ray, const Tr
 
 // The whole frame.
 Frame render(const CompiledScene& cs, const RenderOptions& opt);
+
+// The scene shaded without highlights, as a build without the specular unit
+// (csgrt_top's SPECULAR = 0) shades it: every material's phong set to 0.
+// render() uses it when the effects leave specular out.
+CompiledScene without_highlights(const CompiledScene& cs);
 
 // Render one pixel of the fixed path, with the trace kept for reports.
 struct PixelTrace {

@@ -56,8 +56,14 @@
 //   C4  add (1)   col = rnd(., CF) + spec (miss: background), clamp 0..4095
 //   C5  lut (1)   csgrt_srgb x 3;  output skid (1)
 // Multipliers: 21 (A) + 34 (B) + 6 (C) = 61 csgrt_mul.
+// Without the specular unit (SPECULAR = 0: a scene without phong, or a build
+// that shades without highlights, docs/effects.md) A12, A13, B8's r_i l_i,
+// B10, B11 and B12's light_c ph are absent (28 csgrt_mul fewer: 33) and the
+// specular sums stay 0, as they do with phong = 0; segment B is 22 clocks
+// shorter.
 // Latency (no back-pressure): 127 clocks from input to output for a miss or
-// one light (any BITS: shading widths are fixed); light k adds k clocks.
+// one light (any BITS: shading widths are fixed; 105 with SPECULAR = 0);
+// light k adds k clocks.
 // Throughput: segment A one pixel per clock; segment B one light per clock:
 // a hit pixel every max(1, lights) clocks, a miss every clock.
 // Handshake: valid/ready on both sides; s_ready_o is skid A's registered
@@ -75,7 +81,10 @@ module csgrt_shade #(
     // item's tag (the pixel's x field, lc_tag_o) and light (lc_k_o) in the
     // same clock: the light colour scaled by what its shadow ray brought back.
     parameter LINEAR_OUT = 0,
-    parameter EXT_LIGHT  = 0
+    parameter EXT_LIGHT  = 0,
+    // 1: phong highlights (the specular unit); 0: shaded as if every phong
+    // were 0, without the hardware that computes highlights
+    parameter SPECULAR   = 1
 ) (
     input  wire                          clk_i,
     input  wire                          rst_ni,         // synchronous, active low
@@ -135,6 +144,9 @@ module csgrt_shade #(
     localparam SAW  = 26;    // specular sum
     localparam IW   = 25;    // intensity
     localparam CLW  = 31;    // colour before the clamp
+    // the reflected view direction r rides along with each pixel and light
+    // item; without the specular unit one constant bit holds its place
+    localparam RXW  = (SPECULAR != 0) ? 3 * RW : 1;
 
     // pixel side data: {phong_size, phong, diffuse, ambient, rgb, hit, y, x}
     localparam PIXW = 10 + 16 * 3 + 48 + 1 + 24;
@@ -328,17 +340,6 @@ module csgrt_shade #(
     end
 
     // ---- A12: dn n_i; A13: r = ds - rnd(2 dn n, SF) ---------------------------
-    localparam DNPW = DNW + NVW;   // 35
-    wire [3*DNPW-1:0] dnn;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_a12
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(DNW), .B_WIDTH(NVW)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a11_valid_q),
-                .a_i(a11_dn_q), .b_i(a11_n_q[i*NVW +: NVW]),
-                .valid_o(unused_v), .p_o(dnn[i*DNPW +: DNPW]));
-        end
-    endgenerate
     wire             a12_valid;
     wire [3*NVW-1:0] a12_n;
     wire [A4W-1:0]   a12_side;
@@ -348,19 +349,33 @@ module csgrt_shade #(
     wire [3*PSW-1:0] a12_ps  = a12_side[0 +: 3*PSW];
     wire [3*DSW-1:0] a12_ds  = a12_side[3*PSW +: 3*DSW];
     wire [PIXW-1:0]  a12_pix = a12_side[PDW +: PIXW];
-    wire [3*RW-1:0]  r_d;
+    wire [RXW-1:0]   r_d;
     generate
-        for (i = 0; i < 3; i = i + 1) begin : g_a13
-            // rnd(2 x, 15) = rnd(x, 14)
-            wire [DNPW-1:0] pr = dnn[i*DNPW +: DNPW] + {{(DNPW-14){1'b0}}, 1'b1, 13'd0};
-            wire unused_pr = ^{pr[13:0], pr[DNPW-1:14+RW]};
-            wire [DSW-1:0]  ds = a12_ds[i*DSW +: DSW];
-            assign r_d[i*RW +: RW] = {ds[DSW-1], ds} - pr[14 +: RW];
+        if (SPECULAR != 0) begin : g_a12
+            localparam DNPW = DNW + NVW;   // 35
+            wire [3*DNPW-1:0] dnn;
+            for (i = 0; i < 3; i = i + 1) begin : g_mul
+                wire unused_v;
+                csgrt_mul #(.A_WIDTH(DNW), .B_WIDTH(NVW)) u_mul (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a11_valid_q),
+                    .a_i(a11_dn_q), .b_i(a11_n_q[i*NVW +: NVW]),
+                    .valid_o(unused_v), .p_o(dnn[i*DNPW +: DNPW]));
+            end
+            for (i = 0; i < 3; i = i + 1) begin : g_a13
+                // rnd(2 x, 15) = rnd(x, 14)
+                wire [DNPW-1:0] pr = dnn[i*DNPW +: DNPW] + {{(DNPW-14){1'b0}}, 1'b1, 13'd0};
+                wire unused_pr = ^{pr[13:0], pr[DNPW-1:14+RW]};
+                wire [DSW-1:0]  ds = a12_ds[i*DSW +: DSW];
+                assign r_d[i*RW +: RW] = {ds[DSW-1], ds} - pr[14 +: RW];
+            end
+        end else begin : g_no_a12
+            assign r_d = 1'b0;
+            wire unused_dn = ^{a11_dn_q, a12_ds};
         end
     endgenerate
 
     // ---- skid A ------------------------------------------------------------------
-    localparam SKAW = PIXW + 3 * PSW + 3 * NVW + 3 * RW;
+    localparam SKAW = PIXW + 3 * PSW + 3 * NVW + RXW;
     wire             ska_valid;
     wire             ska_ready;
     wire [SKAW-1:0]  ska_data;
@@ -370,8 +385,8 @@ module csgrt_shade #(
         .valid_o(ska_valid), .ready_i(ska_ready), .data_o(ska_data));
     wire [3*PSW-1:0] sq_ps  = ska_data[0 +: 3*PSW];
     wire [3*NVW-1:0] sq_n   = ska_data[3*PSW +: 3*NVW];
-    wire [3*RW-1:0]  sq_r   = ska_data[3*PSW+3*NVW +: 3*RW];
-    wire [PIXW-1:0]  sq_pix = ska_data[3*PSW+3*NVW+3*RW +: PIXW];
+    wire [RXW-1:0]   sq_r   = ska_data[3*PSW+3*NVW +: RXW];
+    wire [PIXW-1:0]  sq_pix = ska_data[3*PSW+3*NVW+RXW +: PIXW];
 
     // =========================================================================
     // Light sequencer
@@ -429,7 +444,7 @@ module csgrt_shade #(
         end
     endgenerate
     // item flags: {use, last, first}
-    localparam XBW = 48 + 3 * NVW + 3 * RW + PIXW + 3;
+    localparam XBW = 48 + 3 * NVW + RXW + PIXW + 3;
     reg             b1_valid_q;
     reg [3*GW-1:0]  b1_lv_q;
     reg [XBW-1:0]   b1_x_q;
@@ -452,9 +467,9 @@ module csgrt_shade #(
         .valid_o(b7_valid), .u_o(b7_l), .user_o(b7_x));
     wire [47:0]      b7_lcol = b7_x[0 +: 48];
     wire [3*NVW-1:0] b7_n    = b7_x[48 +: 3*NVW];
-    wire [3*RW-1:0]  b7_r    = b7_x[48+3*NVW +: 3*RW];
-    wire [PIXW-1:0]  b7_pix  = b7_x[48+3*NVW+3*RW +: PIXW];
-    wire [2:0]       b7_fl   = b7_x[48+3*NVW+3*RW+PIXW +: 3];
+    wire [RXW-1:0]   b7_r    = b7_x[48+3*NVW +: RXW];
+    wire [PIXW-1:0]  b7_pix  = b7_x[48+3*NVW+RXW +: PIXW];
+    wire [2:0]       b7_fl   = b7_x[48+3*NVW+RXW+PIXW +: 3];
 
     // ---- B8: n_i l_i, r_i l_i ---------------------------------------------------
     localparam NLPW = 2 * NVW;     // 34
@@ -463,15 +478,23 @@ module csgrt_shade #(
     wire [3*RLPW-1:0] rl_p;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_b8
-            wire unused_vn, unused_vr;
+            wire unused_vn;
             csgrt_mul #(.A_WIDTH(NVW), .B_WIDTH(NVW)) u_mul_n (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
                 .a_i(b7_n[i*NVW +: NVW]), .b_i(b7_l[i*NVW +: NVW]),
                 .valid_o(unused_vn), .p_o(nl_p[i*NLPW +: NLPW]));
-            csgrt_mul #(.A_WIDTH(RW), .B_WIDTH(NVW)) u_mul_r (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
-                .a_i(b7_r[i*RW +: RW]), .b_i(b7_l[i*NVW +: NVW]),
-                .valid_o(unused_vr), .p_o(rl_p[i*RLPW +: RLPW]));
+            if (SPECULAR != 0) begin : g_r
+                wire unused_vr;
+                csgrt_mul #(.A_WIDTH(RW), .B_WIDTH(NVW)) u_mul_r (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
+                    .a_i(b7_r[i*RW +: RW]), .b_i(b7_l[i*NVW +: NVW]),
+                    .valid_o(unused_vr), .p_o(rl_p[i*RLPW +: RLPW]));
+            end else begin : g_no_r
+                assign rl_p[i*RLPW +: RLPW] = {RLPW{1'b0}};   // cos_r = 0: no highlight
+            end
+        end
+        if (SPECULAR == 0) begin : g_no_r_sink
+            wire unused_r = ^b7_r;
         end
     endgenerate
     localparam X2W = 48 + PIXW + 3;   // {flags, pix, lcol}
@@ -514,85 +537,94 @@ module csgrt_shade #(
     end
     wire unused_b9_top = ^{ndl_full[NLSW-16:NDW], cr_full[RLSW-16:NDW]};
 
-    // ---- B10: pw = pow_fx(cos_r, phong_size, SF) ---------------------------------
-    // stage k: res = bit k ? rnd(res * base, SF) : res; base = rnd(base^2, SF)
-    localparam NPOW = 10;
-    localparam PPW  = 2 * NDW;
+    // ---- B10: pw = pow_fx(cos_r, phong_size, SF); B11: ph = rnd(phong pw, SF) ------
+    // (the specular unit: without it the item goes from B9 to B12 directly)
     localparam PSDW = NDW + 2 + X2W;   // {enables, ndl, x} through the stages
-    wire [(NPOW+1)*NDW-1:0]  pw_res, pw_base;
-    wire [(NPOW+1)*PSDW-1:0] pw_side;
-    wire [NPOW:0]            pw_valid;
-    assign pw_res[0 +: NDW]    = {{(NDW-16){1'b0}}, 1'b1, 15'd0};   // 1.0
-    assign pw_base[0 +: NDW]   = b9_cr_q;
-    assign pw_side[0 +: PSDW]  = {b9_sen_q, b9_den_q, b9_ndl_q, b9_x_q};
-    assign pw_valid[0]         = b9_valid_q;
-    generate
-        for (i = 0; i < NPOW; i = i + 1) begin : g_pow
-            wire [NDW-1:0]  res_in  = pw_res[i*NDW +: NDW];
-            wire [NDW-1:0]  base_in = pw_base[i*NDW +: NDW];
-            wire [NDW-1:0]  res_dly;
-            wire [PSDW-1:0] side_dly;
-            wire [NDW-1:0]  base_dly;
-            csgrt_delay #(.WIDTH(PSDW + 2 * NDW), .STAGES(2)) u_dly (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
-                .data_i({pw_side[i*PSDW +: PSDW], base_in, res_in}), .valid_o(pw_valid[i+1]),
-                .data_o({side_dly, base_dly, res_dly}));
-            wire [PIXW-1:0] pix = side_dly[48 +: PIXW];
-            wire            bit_k = pix[PX_PHS + i];
-            // result: stage 0 multiplies by 1.0, which is exact: res = base
-            if (i == 0) begin : g_first
-                assign pw_res[(i+1)*NDW +: NDW] = bit_k ? base_dly : res_dly;
-            end else begin : g_mul_res
-                wire [PPW-1:0] pr;
-                wire           unused_v;
-                csgrt_mul #(.A_WIDTH(NDW), .B_WIDTH(NDW)) u_mul_r (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
-                    .a_i(res_in), .b_i(base_in), .valid_o(unused_v), .p_o(pr));
-                wire [PPW-1:0] prr = pr + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
-                wire unused_prr = ^{prr[14:0], prr[PPW-1:15+NDW]};
-                assign pw_res[(i+1)*NDW +: NDW] = bit_k ? prr[15 +: NDW] : res_dly;
-            end
-            // base: the square after the last exponent bit is never used
-            if (i == NPOW - 1) begin : g_last
-                assign pw_base[(i+1)*NDW +: NDW] = base_dly;
-            end else begin : g_mul_base
-                wire [PPW-1:0] pb;
-                wire           unused_v;
-                csgrt_mul #(.A_WIDTH(NDW), .B_WIDTH(NDW)) u_mul_b (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
-                    .a_i(base_in), .b_i(base_in), .valid_o(unused_v), .p_o(pb));
-                wire [PPW-1:0] pbr = pb + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
-                wire unused_pbr = ^{pbr[14:0], pbr[PPW-1:15+NDW]};
-                assign pw_base[(i+1)*NDW +: NDW] = pbr[15 +: NDW];
-            end
-            assign pw_side[(i+1)*PSDW +: PSDW] = side_dly;
-            if (i != 0 && i != NPOW - 1) begin : g_mid
-                wire unused_bd = ^base_dly;
-            end
-        end
-    endgenerate
-    wire [NDW-1:0]  b10_pw    = pw_res[NPOW*NDW +: NDW];
-    wire [PSDW-1:0] b10_side  = pw_side[NPOW*PSDW +: PSDW];
-    wire            b10_valid = pw_valid[NPOW];
-    wire unused_pw_base = ^pw_base[NPOW*NDW +: NDW];
-    wire [PIXW-1:0] b10_pix   = b10_side[48 +: PIXW];
-    wire unused_b10_pix = ^{b10_pix[PIXW-1:PX_PH+16], b10_pix[PX_PH-1:0]};
-
-    // ---- B11: ph = rnd(phong pw, SF) ----------------------------------------------
-    localparam PHPW = 17 + NDW;   // 35
-    wire [PHPW-1:0] php;
-    wire            unused_vph;
-    csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_ph (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b10_valid),
-        .a_i({1'b0, b10_pix[PX_PH +: 16]}), .b_i(b10_pw), .valid_o(unused_vph), .p_o(php));
     wire            b11_valid;
     wire [PSDW-1:0] b11_side;
-    csgrt_delay #(.WIDTH(PSDW), .STAGES(2)) u_dly_b11 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b10_valid),
-        .data_i(b10_side), .valid_o(b11_valid), .data_o(b11_side));
-    wire [PHPW-1:0] phr = php + {{(PHPW-15){1'b0}}, 1'b1, 14'd0};
-    wire unused_phr = ^{phr[14:0], phr[PHPW-1:15+NDW]};
-    wire [NDW-1:0]  b11_ph   = phr[15 +: NDW];
+    wire [NDW-1:0]  b11_ph;
+    generate
+        if (SPECULAR != 0) begin : g_phong
+            // stage k: res = bit k ? rnd(res * base, SF) : res; base = rnd(base^2, SF)
+            localparam NPOW = 10;
+            localparam PPW  = 2 * NDW;
+            wire [(NPOW+1)*NDW-1:0]  pw_res, pw_base;
+            wire [(NPOW+1)*PSDW-1:0] pw_side;
+            wire [NPOW:0]            pw_valid;
+            assign pw_res[0 +: NDW]    = {{(NDW-16){1'b0}}, 1'b1, 15'd0};   // 1.0
+            assign pw_base[0 +: NDW]   = b9_cr_q;
+            assign pw_side[0 +: PSDW]  = {b9_sen_q, b9_den_q, b9_ndl_q, b9_x_q};
+            assign pw_valid[0]         = b9_valid_q;
+            for (i = 0; i < NPOW; i = i + 1) begin : g_pow
+                wire [NDW-1:0]  res_in  = pw_res[i*NDW +: NDW];
+                wire [NDW-1:0]  base_in = pw_base[i*NDW +: NDW];
+                wire [NDW-1:0]  res_dly;
+                wire [PSDW-1:0] side_dly;
+                wire [NDW-1:0]  base_dly;
+                csgrt_delay #(.WIDTH(PSDW + 2 * NDW), .STAGES(2)) u_dly (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
+                    .data_i({pw_side[i*PSDW +: PSDW], base_in, res_in}), .valid_o(pw_valid[i+1]),
+                    .data_o({side_dly, base_dly, res_dly}));
+                wire [PIXW-1:0] pix = side_dly[48 +: PIXW];
+                wire            bit_k = pix[PX_PHS + i];
+                // result: stage 0 multiplies by 1.0, which is exact: res = base
+                if (i == 0) begin : g_first
+                    assign pw_res[(i+1)*NDW +: NDW] = bit_k ? base_dly : res_dly;
+                end else begin : g_mul_res
+                    wire [PPW-1:0] pr;
+                    wire           unused_v;
+                    csgrt_mul #(.A_WIDTH(NDW), .B_WIDTH(NDW)) u_mul_r (
+                        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
+                        .a_i(res_in), .b_i(base_in), .valid_o(unused_v), .p_o(pr));
+                    wire [PPW-1:0] prr = pr + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
+                    wire unused_prr = ^{prr[14:0], prr[PPW-1:15+NDW]};
+                    assign pw_res[(i+1)*NDW +: NDW] = bit_k ? prr[15 +: NDW] : res_dly;
+                end
+                // base: the square after the last exponent bit is never used
+                if (i == NPOW - 1) begin : g_last
+                    assign pw_base[(i+1)*NDW +: NDW] = base_dly;
+                end else begin : g_mul_base
+                    wire [PPW-1:0] pb;
+                    wire           unused_v;
+                    csgrt_mul #(.A_WIDTH(NDW), .B_WIDTH(NDW)) u_mul_b (
+                        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
+                        .a_i(base_in), .b_i(base_in), .valid_o(unused_v), .p_o(pb));
+                    wire [PPW-1:0] pbr = pb + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
+                    wire unused_pbr = ^{pbr[14:0], pbr[PPW-1:15+NDW]};
+                    assign pw_base[(i+1)*NDW +: NDW] = pbr[15 +: NDW];
+                end
+                assign pw_side[(i+1)*PSDW +: PSDW] = side_dly;
+                if (i != 0 && i != NPOW - 1) begin : g_mid
+                    wire unused_bd = ^base_dly;
+                end
+            end
+            wire [NDW-1:0]  b10_pw    = pw_res[NPOW*NDW +: NDW];
+            wire [PSDW-1:0] b10_side  = pw_side[NPOW*PSDW +: PSDW];
+            wire            b10_valid = pw_valid[NPOW];
+            wire unused_pw_base = ^pw_base[NPOW*NDW +: NDW];
+            wire [PIXW-1:0] b10_pix   = b10_side[48 +: PIXW];
+            wire unused_b10_pix = ^{b10_pix[PIXW-1:PX_PH+16], b10_pix[PX_PH-1:0]};
+
+            // ---- B11: ph = rnd(phong pw, SF) ----------------------------------------------
+            localparam PHPW = 17 + NDW;   // 35
+            wire [PHPW-1:0] php;
+            wire            unused_vph;
+            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_ph (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b10_valid),
+                .a_i({1'b0, b10_pix[PX_PH +: 16]}), .b_i(b10_pw), .valid_o(unused_vph), .p_o(php));
+            csgrt_delay #(.WIDTH(PSDW), .STAGES(2)) u_dly_b11 (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b10_valid),
+                .data_i(b10_side), .valid_o(b11_valid), .data_o(b11_side));
+            wire [PHPW-1:0] phr = php + {{(PHPW-15){1'b0}}, 1'b1, 14'd0};
+            wire unused_phr = ^{phr[14:0], phr[PHPW-1:15+NDW]};
+            assign b11_ph = phr[15 +: NDW];
+        end else begin : g_no_phong
+            assign b11_valid = b9_valid_q;
+            assign b11_side  = {b9_sen_q, b9_den_q, b9_ndl_q, b9_x_q};
+            assign b11_ph    = {NDW{1'b0}};
+            wire unused_cr = ^b9_cr_q;
+        end
+    endgenerate
     wire [47:0]     b11_lcol = b11_side[0 +: 48];
     wire [NDW-1:0]  b11_ndl  = b11_side[X2W +: NDW];
 
@@ -601,13 +633,21 @@ module csgrt_shade #(
     wire [3*LPW-1:0] lsp, ldp;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_b12
-            wire unused_vs, unused_vd;
-            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_s (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
-                .a_i({1'b0, b11_lcol[i*16 +: 16]}), .b_i(b11_ph), .valid_o(unused_vs), .p_o(lsp[i*LPW +: LPW]));
+            wire unused_vd;
+            if (SPECULAR != 0) begin : g_s
+                wire unused_vs;
+                csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_s (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
+                    .a_i({1'b0, b11_lcol[i*16 +: 16]}), .b_i(b11_ph), .valid_o(unused_vs), .p_o(lsp[i*LPW +: LPW]));
+            end else begin : g_no_s
+                assign lsp[i*LPW +: LPW] = {LPW{1'b0}};
+            end
             csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_d (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
                 .a_i({1'b0, b11_lcol[i*16 +: 16]}), .b_i(b11_ndl), .valid_o(unused_vd), .p_o(ldp[i*LPW +: LPW]));
+        end
+        if (SPECULAR == 0) begin : g_no_s_sink
+            wire unused_ph = ^b11_ph;
         end
     endgenerate
     localparam X3W = 2 + PIXW + 3;   // {enables, flags, pix}
@@ -637,7 +677,9 @@ module csgrt_shade #(
             wire [DAW-1:0] dt = b12_den ? {3'b000, dp[15 +: DAW-3]} : {DAW{1'b0}};
             wire [SAW-1:0] st = b12_sen ? {{(SAW-(LPW-12)){1'b0}}, sp[LPW-1:12]} : {SAW{1'b0}};
             assign dsum[i*DAW +: DAW] = (b12_first ? {DAW{1'b0}} : dacc_q[i*DAW +: DAW]) + dt;
-            assign ssum[i*SAW +: SAW] = (b12_first ? {SAW{1'b0}} : sacc_q[i*SAW +: SAW]) + st;
+            // without the specular unit the sum is constant 0 (no register left)
+            assign ssum[i*SAW +: SAW] = (SPECULAR == 0) ? {SAW{1'b0}}
+                                      : (b12_first ? {SAW{1'b0}} : sacc_q[i*SAW +: SAW]) + st;
         end
     endgenerate
     reg              c0_valid_q;

@@ -6,6 +6,8 @@
 //                                          |                   |
 //                                       ray queue ------> lookup -> shade -> pixels
 //
+// Phong highlights are the specular unit of csgrt_shade (SPECULAR; without
+// it a scene is shaded as if no material had phong).
 // With shadows, reflection or refraction (SHADOWS, REFLECTION, REFRACTION;
 // a build has only the units its parameters ask for) the camera's rays and
 // the secondary rays go through csgrt_raytree, which schedules each pixel's
@@ -37,6 +39,7 @@ module csgrt_top #(
     parameter SHADOWS       = 0,     // shadow rays to every light
     parameter REFLECTION    = 0,     // mirror reflection
     parameter REFRACTION    = 0,     // transmitted rays, total internal reflection, the look-ahead
+    parameter SPECULAR      = 1,     // phong highlights (0: shaded as if every phong were 0)
     parameter CONTEXTS      = 8,     // pixels in flight in the ray tree
     parameter MAX_DEPTH     = 8,     // ray tree depth the stack holds (>= max_trace_level)
     // derived
@@ -427,7 +430,7 @@ module csgrt_top #(
             wire unused_eff = ^{hit_entering, l_to_q, l_near_q, l_after_q, l_run_q, mat[MAT_W-1:96], max_trace,
                                 l_from_q, ior_a, ior_b, mat_clear, leaf_c_coef,
                                 light_shadowless};   // every light is unshadowed here
-            csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE)) u_shade (
+            csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE), .SPECULAR(SPECULAR)) u_shade (
                 .clk_i, .rst_ni,
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
                 .light_color_i (light_col), .background_i (background),
@@ -534,7 +537,7 @@ module csgrt_top #(
             wire unused_ch = ^{ch_in_range, sr_y, hit_entering, l_mat_q, cam_last};
 
             csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE),
-                          .LINEAR_OUT(1), .EXT_LIGHT(1)) u_shade (
+                          .LINEAR_OUT(1), .EXT_LIGHT(1), .SPECULAR(SPECULAR)) u_shade (
                 .clk_i, .rst_ni,
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
                 .light_color_i (light_col), .background_i (background),

@@ -19,7 +19,7 @@ using namespace csgrt;
 using Clock = std::chrono::steady_clock;
 
 // The effect units this binary was built with (csgrt_top's SHADOWS,
-// REFLECTION, REFRACTION; the Makefile passes them).
+// REFLECTION, REFRACTION, SPECULAR; the Makefile passes them).
 #ifndef CSGRT_SHADOWS
 #define CSGRT_SHADOWS 0
 #endif
@@ -28,6 +28,9 @@ using Clock = std::chrono::steady_clock;
 #endif
 #ifndef CSGRT_REFRACTION
 #define CSGRT_REFRACTION 0
+#endif
+#ifndef CSGRT_SPECULAR
+#define CSGRT_SPECULAR 1
 #endif
 
 namespace {
@@ -41,6 +44,7 @@ const char* kBuildUnits = !kEffects ? "no effect units"
                           : CSGRT_SHADOWS ? "a shadow unit"
                           : CSGRT_REFLECTION ? "a reflection unit"
                                              : "a refraction unit";
+const char* kSpecularUnit = CSGRT_SPECULAR ? ", with the specular unit" : ", without the specular unit";
 
 const char* kUsage =
     "usage: csgrt_sim --scene-image SCENE.bin --out OUT.png [--ties paper|regular] [--trace OUT.fst]\n"
@@ -90,9 +94,9 @@ int main(int argc, char** argv) {
         return 1;
     }
     const int W = cs.width, H = cs.height;
-    const EffectSet rtl_fx = rtl_effects(cs, CSGRT_SHADOWS, CSGRT_REFLECTION, CSGRT_REFRACTION);
-    std::printf("scene effects: %s; this build has %s; it renders: %s\n", scene_effects(cs).str().c_str(),
-                kBuildUnits, rtl_fx.str().c_str());
+    const EffectSet rtl_fx = rtl_effects(cs, CSGRT_SHADOWS, CSGRT_REFLECTION, CSGRT_REFRACTION, CSGRT_SPECULAR);
+    std::printf("scene effects: %s; this build has %s%s; it renders: %s\n", scene_effects(cs).str().c_str(),
+                kBuildUnits, kSpecularUnit, rtl_fx.str().c_str());
 
     csgrt_sim::TopSim<Vcsgrt_top> sim(cs.fmt.bits, CSGRT_LEAF_BITS, CSGRT_TREE_HEIGHT, CSGRT_NUM_UNITS, trace_path);
     sim.reset();

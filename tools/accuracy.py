@@ -203,14 +203,15 @@ def make_model():
     subprocess.run(["make", "--no-print-directory", "model"], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
 
 
-def sim_build(bits, shadows, reflection, refraction):
+def sim_build(bits, shadows, reflection, refraction, specular):
     """The `make sim` binary for this configuration (built once, cached)."""
-    path = f"build/sim/b{bits}u1s{shadows}r{reflection}f{refraction}/csgrt_sim"
+    path = f"build/sim/b{bits}u1s{shadows}r{reflection}f{refraction}p{specular}/csgrt_sim"
     log(f"BITS={bits}: simulation build {path} (cached after the first build; a build takes a few minutes)")
     t0 = time.time()
     # the Makefile's own rule: the same binary `make sim` uses, rebuilt when rtl/ or sim/ change
     subprocess.run(["make", "--no-print-directory", path, f"BITS={bits}", "UNITS=1", f"SHADOWS={shadows}",
-                    f"REFLECTION={reflection}", f"REFRACTION={refraction}"], cwd=ROOT, check=True)
+                    f"REFLECTION={reflection}", f"REFRACTION={refraction}", f"SPECULAR={specular}"],
+                   cwd=ROOT, check=True)
     if time.time() - t0 > 5:
         log(f"BITS={bits}: built in {time.time() - t0:.0f} s")
     return os.path.join(ROOT, path)
@@ -218,8 +219,8 @@ def sim_build(bits, shadows, reflection, refraction):
 
 def scene_units(scene):
     _, out, _ = run([CSGRT, "units", scene])
-    m = re.search(r"SHADOWS=(\d) REFLECTION=(\d) REFRACTION=(\d)", out)
-    return int(m.group(1)), int(m.group(2)), int(m.group(3))
+    m = re.search(r"SHADOWS=(\d) REFLECTION=(\d) REFRACTION=(\d) SPECULAR=(\d)", out)
+    return tuple(int(m.group(k)) for k in range(1, 5))
 
 
 def simulate(binary, scene, bits, size, ties, work):
@@ -579,7 +580,7 @@ def rtl_columns(r, a, bits, scene, binaries, work, rtl_notes):
     sim_size, frame_size = a.sim_size, a.frame_size
     sz = lambda s: f"{s[0]}x{s[1]}"
     r["isect_latency"] = 2 * F + 19   # csgrt_isect.v; asserted by tb/isect at 12, 16, 24, 32
-    fx = (1, 1, 1) if a.effects == "all" else scene_units(scene)
+    fx = (1, 1, 1, 1) if a.effects == "all" else scene_units(scene)
     if fx not in binaries:
         binaries[fx] = sim_build(bits, *fx)
     log(f"    RTL: 1x1 frame (pixel latency)")

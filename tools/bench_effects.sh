@@ -30,21 +30,21 @@ make --no-print-directory model >/dev/null
 OUT=out/bench-effects
 mkdir -p "$OUT"
 
-sim_bin() { echo "build/sim/b${BITS}u1s$1r$2f$3/csgrt_sim"; }
-build() {   # shadows reflection refraction
-    make --no-print-directory "$(sim_bin "$1" "$2" "$3")" BITS="$BITS" UNITS=1 SHADOWS="$1" REFLECTION="$2" \
-        REFRACTION="$3" >&2
+sim_bin() { echo "build/sim/b${BITS}u1s$1r$2f$3p$4/csgrt_sim"; }
+build() {   # shadows reflection refraction specular
+    make --no-print-directory "$(sim_bin "$1" "$2" "$3" "$4")" BITS="$BITS" UNITS=1 SHADOWS="$1" REFLECTION="$2" \
+        REFRACTION="$3" SPECULAR="$4" >&2
 }
 
 # cells of csgrt_top in a build (cached per configuration)
-cells() {   # shadows reflection refraction
-    local f="$OUT/cells_b${BITS}s$1r$2f$3.txt"
+cells() {   # shadows reflection refraction specular
+    local f="$OUT/cells_b${BITS}s$1r$2f$3p$4.txt"
     if [ ! -s "$f" ]; then
-        echo "bench-effects: yosys cell count for SHADOWS=$1 REFLECTION=$2 REFRACTION=$3 (a few minutes)" >&2
+        echo "bench-effects: yosys cell count for SHADOWS=$1 REFLECTION=$2 REFRACTION=$3 SPECULAR=$4 (a few minutes)" >&2
         # coarse cells (after proc and opt: adders, multipliers, muxes,
         # registers as words), summed over the hierarchy: quick, and enough
         # to see which units a build has
-        yosys -q -p "read_verilog -Irtl rtl/csgrt_*.v; chparam -set BITS $BITS -set SHADOWS $1 -set REFLECTION $2 -set REFRACTION $3 csgrt_top; \
+        yosys -q -p "read_verilog -Irtl rtl/csgrt_*.v; chparam -set BITS $BITS -set SHADOWS $1 -set REFLECTION $2 -set REFRACTION $3 -set SPECULAR $4 csgrt_top; \
                      hierarchy -top csgrt_top; proc; opt -fast; tee -o $f stat -top csgrt_top" >/dev/null 2>&1 \
             || { echo "?" > "$f"; }
     fi
@@ -81,19 +81,19 @@ printf "%-22s %-9s %10s %10s %10s %10s %8s %10s %10s %s\n" scene units "spec s" 
     "cycles" "" "cells" "cells all" "images"
 for scene in "${SCENES[@]}"; do
     name=$(basename "$scene" .pov)
-    read -r S R F < <(build/csgrt units "$scene" 2>/dev/null |
-                      sed 's/SHADOWS=\([01]\) REFLECTION=\([01]\) REFRACTION=\([01]\)/\1 \2 \3/')
-    build "$S" "$R" "$F"; build 1 1 1
+    read -r S R F P < <(build/csgrt units "$scene" 2>/dev/null |
+                        sed 's/SHADOWS=\([01]\) REFLECTION=\([01]\) REFRACTION=\([01]\) SPECULAR=\([01]\)/\1 \2 \3 \4/')
+    build "$S" "$R" "$F" "$P"; build 1 1 1 1
     compile_scene "$scene"
-    read -r ts cs tf cf < <(run_pair "$(sim_bin "$S" "$R" "$F")" "$(sim_bin 1 1 1)" "$scene" "$name")
+    read -r ts cs tf cf < <(run_pair "$(sim_bin "$S" "$R" "$F" "$P")" "$(sim_bin 1 1 1 1)" "$scene" "$name")
     if idiff -fail 0 -warn 0 "$OUT/${name}_spec.png" "$OUT/${name}_all.png" >/dev/null 2>&1; then
         same=identical
     else
         same=DIFFER
     fi
-    if [ "$YOSYS" = 1 ]; then c1=$(cells "$S" "$R" "$F"); c2=$(cells 1 1 1); else c1=-; c2=-; fi
+    if [ "$YOSYS" = 1 ]; then c1=$(cells "$S" "$R" "$F" "$P"); c2=$(cells 1 1 1 1); else c1=-; c2=-; fi
     ratio=$(awk -v a="$tf" -v b="$ts" 'BEGIN { printf "%.2f", (b > 0) ? a / b : 0 }')
-    printf "%-22s s%sr%sf%s %10s %10s %10s %10s %8s %10s %10s %s\n" "$name" "$S" "$R" "$F" "$ts" "$tf" "${ratio}x" "$cs" \
+    printf "%-22s s%sr%sf%sp%s %10s %10s %10s %10s %8s %10s %10s %s\n" "$name" "$S" "$R" "$F" "$P" "$ts" "$tf" "${ratio}x" "$cs" \
         "$([ "$cs" = "$cf" ] && echo "" || echo "($cf)")" "$c1" "$c2" "$same"
 done
-echo "spec: the build with the scene's units (csgrt units); full: SHADOWS=1 REFLECTION=1 REFRACTION=1; ${W}x${H}, BITS=$BITS, median of $RUNS"
+echo "spec: the build with the scene's units (csgrt units); full: SHADOWS=1 REFLECTION=1 REFRACTION=1 SPECULAR=1; ${W}x${H}, BITS=$BITS, median of $RUNS"

@@ -73,9 +73,11 @@ def identify(port, timeout):
     r = read_exact(port, 6, timeout, "the identify reply")
     if r[0] != 0xA5 or r[1] != ord("I"):
         raise RuntimeError(f"unexpected identify reply {r.hex()}: is the csgrt bitstream loaded?")
-    # r[5]: the effect units the bitstream has (bit 0 shadows, bit 1 reflection, bit 2 refraction)
+    # r[5]: the effect units the bitstream has (bit 0 shadows, bit 1 reflection, bit 2 refraction,
+    # bit 3 specular highlights)
     return {"bits": r[2], "max_leaves": r[3], "tree_height": r[4],
-            "shadows": bool(r[5] & 1), "reflection": bool(r[5] & 2), "refraction": bool(r[5] & 4)}
+            "shadows": bool(r[5] & 1), "reflection": bool(r[5] & 2), "refraction": bool(r[5] & 4),
+            "specular": bool(r[5] & 8)}
 
 
 def render(port, image, ties="paper", timeout=5.0, quiet=False):

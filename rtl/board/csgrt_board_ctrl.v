@@ -10,8 +10,8 @@
 //   anything else in idle is ignored.
 // Board -> host:
 //   'I':      A5 49 BITS MAX_LEAVES TREE_HEIGHT EFFECTS (bit 0 shadows,
-//             bit 1 reflection, bit 2 refraction: the effect units the core
-//             was built with)
+//             bit 1 reflection, bit 2 refraction, bit 3 specular: the
+//             effect units the core was built with)
 //   P / R:    A5 code; code 0: the image loaded, then W*H pixels as r, g, b
 //             bytes in raster order, then the frame's cycle count (start to
 //             last pixel, 8 bytes little-endian). code 1..5: the loader
@@ -27,6 +27,7 @@ module csgrt_board_ctrl #(
     parameter SHADOWS      = 0,          // csgrt_top's effect units (docs/effects.md)
     parameter REFLECTION   = 0,
     parameter REFRACTION   = 0,
+    parameter SPECULAR     = 1,
     parameter IDLE_CLOCKS  = 10000000,   // line idle time that ends a discard / aborts a load
     parameter LUT_FILE     = "rtl/srgb_lut.hex"
 ) (
@@ -49,7 +50,7 @@ module csgrt_board_ctrl #(
     /* verilator lint_off WIDTH */
     localparam [IW-1:0] IDLE_MAX = IDLE_CLOCKS;
     localparam [7:0] ID_BITS = BITS, ID_LEAVES = MAX_LEAVES, ID_HEIGHT = TREE_HEIGHT;
-    localparam [7:0] ID_EFFECTS = {5'd0, REFRACTION != 0, REFLECTION != 0, SHADOWS != 0};
+    localparam [7:0] ID_EFFECTS = {4'd0, SPECULAR != 0, REFRACTION != 0, REFLECTION != 0, SHADOWS != 0};
     /* verilator lint_on WIDTH */
 
     reg [3:0]  state_q;
@@ -75,7 +76,8 @@ module csgrt_board_ctrl #(
     wire        pix_ready = (state_q == S_RENDER) && (on_q == 4'd0);
 
     csgrt_top #(.BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .TREE_HEIGHT(TREE_HEIGHT), .LUT_FILE(LUT_FILE),
-                .SHADOWS(SHADOWS), .REFLECTION(REFLECTION), .REFRACTION(REFRACTION)) u_core (
+                .SHADOWS(SHADOWS), .REFLECTION(REFLECTION), .REFRACTION(REFRACTION),
+                .SPECULAR(SPECULAR)) u_core (
         .clk_i, .rst_ni (core_rst_nq),
         .load_valid_i (word_valid_q), .load_ready_o (load_ready), .load_word_i (word_q),
         .loaded_o (loaded), .load_error_o (load_error),

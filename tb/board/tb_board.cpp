@@ -137,7 +137,7 @@ void expect_frame(Board& b, const std::string& name, const std::vector<uint32_t>
     RenderOptions ro;
     ro.ties = ties;
     ro.threads = 1;
-    ro.effects = rtl_effects(cs);   // the effects this RTL implements
+    ro.effects = rtl_effects(cs, false, false, false, true);   // the units of this build: specular only
     const Frame model = render(cs, ro);
     const size_t n = size_t(cs.width) * cs.height;
 
@@ -186,7 +186,8 @@ TEST(Board, IdentifiesItself) {
     b.send({'I'});
     ASSERT_TRUE(b.receive(6, 200 * kDiv));
     const std::vector<uint8_t> r = b.take(6);
-    EXPECT_EQ(r, (std::vector<uint8_t>{0xA5, 'I', uint8_t(BOARD_BITS), 64, 8, 0}));
+    // EFFECTS: no shadow, reflection or refraction unit; the specular unit (bit 3)
+    EXPECT_EQ(r, (std::vector<uint8_t>{0xA5, 'I', uint8_t(BOARD_BITS), 64, 8, 8}));
     EXPECT_TRUE(b.top().led & 1) << "PLL lock LED";
 }
 

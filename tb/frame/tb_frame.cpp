@@ -28,6 +28,9 @@ using namespace csgrt;
 #ifndef FRAME_REFLECTION
 #define FRAME_REFLECTION 0
 #endif
+#ifndef FRAME_SPECULAR
+#define FRAME_SPECULAR 1
+#endif
 
 namespace {
 
@@ -59,7 +62,8 @@ FrameResult run_frame(const std::vector<uint32_t>& words, TiePolicy ties, int re
     RenderOptions ro;
     ro.ties = ties;
     ro.threads = 1;
-    ro.effects = rtl_effects(cs, FRAME_SHADOWS, FRAME_REFLECTION, FRAME_REFRACTION);   // what this build renders
+    // what this build renders
+    ro.effects = rtl_effects(cs, FRAME_SHADOWS, FRAME_REFLECTION, FRAME_REFRACTION, FRAME_SPECULAR);
     const Frame model = render(cs, ro);
     csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
     sim.reset();

@@ -19,6 +19,7 @@ module csgrt_ulx3s #(
     parameter SHADOWS       = 0,          // csgrt_top's effect units (make synth EFFECTS=..)
     parameter REFLECTION    = 0,
     parameter REFRACTION    = 0,
+    parameter SPECULAR      = 1,          // phong highlights (make synth EFFECTS=..,nospecular: 0)
     /* verilator lint_off UNUSEDPARAM */
     parameter CLK_HZ        = 100000000,  // core clock the PLL makes (documentation, idle time)
     /* verilator lint_on UNUSEDPARAM */
@@ -86,7 +87,7 @@ module csgrt_ulx3s #(
     );
     csgrt_board_ctrl #(
         .BITS (BITS), .MAX_LEAVES (MAX_LEAVES), .TREE_HEIGHT (TREE_HEIGHT),
-        .SHADOWS (SHADOWS), .REFLECTION (REFLECTION), .REFRACTION (REFRACTION),
+        .SHADOWS (SHADOWS), .REFLECTION (REFLECTION), .REFRACTION (REFRACTION), .SPECULAR (SPECULAR),
         .IDLE_CLOCKS (IDLE_CLOCKS), .LUT_FILE (LUT_FILE)
     ) u_ctrl (
         .clk_i (clk), .rst_ni (rst_n),
