@@ -3,7 +3,7 @@
 # synth_ecp5, nextpnr-ecp5 place and route, ecppack bitstream (docs/fpga.md).
 #
 #   tools/synth.sh [--bits 24] [--freq 100] [--baud 3000000] [--out out/synth]
-#                  [--tree-height 8] [--max-leaves 64] [--effects none|shadows|reflection|refraction|all]
+#                  [--tree-height 8] [--max-leaves 64] [--effects none|all|shadows,reflection,refraction]
 #                  [--no-specular]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--router router1|router2]
@@ -56,14 +56,19 @@ while [ $# -gt 0 ]; do
         *) echo "synth.sh: unknown argument $1" >&2; exit 1 ;;
     esac
 done
-case "$EFFECTS" in
-    none) SHADOWS=0 REFLECTION=0 REFRACTION=0 ;;
-    shadows) SHADOWS=1 REFLECTION=0 REFRACTION=0 ;;
-    reflection) SHADOWS=0 REFLECTION=1 REFRACTION=0 ;;
-    refraction) SHADOWS=0 REFLECTION=0 REFRACTION=1 ;;
-    all) SHADOWS=1 REFLECTION=1 REFRACTION=1 ;;
-    *) echo "synth.sh: --effects none|shadows|reflection|refraction|all, not $EFFECTS" >&2; exit 1 ;;
-esac
+# a comma-separated list: shadows,reflection is the target configuration
+SHADOWS=0 REFLECTION=0 REFRACTION=0
+for fx in ${EFFECTS//,/ }; do
+    case "$fx" in
+        none) ;;
+        shadows) SHADOWS=1 ;;
+        reflection) REFLECTION=1 ;;
+        refraction) REFRACTION=1 ;;
+        all) SHADOWS=1 REFLECTION=1 REFRACTION=1 ;;
+        *) echo "synth.sh: --effects takes none, all or a comma-separated list of shadows, reflection," \
+                "refraction; not $EFFECTS" >&2; exit 1 ;;
+    esac
+done
 [ "$SPECULAR" = 1 ] || EFFECTS="$EFFECTS,nospecular"   # the label in the summary and report.json
 mkdir -p "$OUT"
 
