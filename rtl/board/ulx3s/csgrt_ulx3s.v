@@ -19,7 +19,7 @@ module csgrt_ulx3s #(
     parameter SHADOWS       = 0,          // csgrt_top's effect units (make synth EFFECTS=..)
     parameter REFLECTION    = 0,
     parameter REFRACTION    = 0,
-    parameter SPECULAR      = 1,          // phong highlights (make synth EFFECTS=..,nospecular: 0)
+    parameter SPECULAR      = 1,          // phong highlights (make synth SPECULAR=0: none)
     /* verilator lint_off UNUSEDPARAM */
     parameter CLK_HZ        = 100000000,  // core clock the PLL makes (documentation, idle time)
     /* verilator lint_on UNUSEDPARAM */
