@@ -31,7 +31,11 @@ module csgrt_mul_dsp #(
         .REG_INPUTA_CLK ("CLK0"), .REG_INPUTA_CE ("CE0"), .REG_INPUTA_RST ("RST0"),
         .REG_INPUTB_CLK ("CLK0"), .REG_INPUTB_CE ("CE0"), .REG_INPUTB_RST ("RST0"),
         .REG_OUTPUT_CLK ("CLK0"), .REG_OUTPUT_CE ("CE0"), .REG_OUTPUT_RST ("RST0"),
-        .GSR ("DISABLED"), .RESETMODE ("SYNC"), .SOURCEB_MODE ("B_INPUT")
+        // SOURCEB_MODE: B_SHIFT (the primitive's default) takes the B
+        // input while SOURCEB = 0. "B_INPUT" is no mode of the block:
+        // yosys and nextpnr passed it through and ecppack crashed on it
+        // (no bitstream of a tiled build until this was found).
+        .GSR ("DISABLED"), .RESETMODE ("SYNC"), .SOURCEB_MODE ("B_SHIFT")
     ) u_mult (
         .A0 (a_i[0]),  .A1 (a_i[1]),  .A2 (a_i[2]),  .A3 (a_i[3]),  .A4 (a_i[4]),  .A5 (a_i[5]),
         .A6 (a_i[6]),  .A7 (a_i[7]),  .A8 (a_i[8]),  .A9 (a_i[9]),  .A10(a_i[10]), .A11(a_i[11]),

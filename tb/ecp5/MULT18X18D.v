@@ -11,10 +11,13 @@
 // REG_INPUTA_CLK / REG_INPUTB_CLK = "CLK0", a pipeline register when
 // REG_PIPELINE_CLK = "CLK0" and an output register when REG_OUTPUT_CLK =
 // "CLK0", each enabled by CE0 and cleared by RST0 (synchronous reset,
-// RESETMODE "SYNC"). Everything else the block can do (the C input, the
-// shift chains SOURCEA / SOURCEB, other clocks and enables, MULT_BYPASS,
-// asynchronous reset) is refused at elaboration, so nothing is simulated
-// that is not modelled. The cascade outputs SRO*, RO* are driven 0.
+// RESETMODE "SYNC"), the B operand from the B input (SOURCEB_MODE
+// "B_SHIFT" with SOURCEB = 0). Everything else the block can do (the C
+// input, the shift chains SOURCEA / SOURCEB, the other SOURCEB_MODEs, other
+// clocks and enables, MULT_BYPASS, asynchronous reset) is refused at
+// elaboration, so nothing is simulated that is not modelled; so is a
+// parameter value the block does not have (SOURCEB_MODE "B_INPUT" passed
+// yosys and nextpnr and crashed ecppack). The cascade outputs SRO*, RO* are driven 0.
 /* verilator lint_off UNUSEDSIGNAL */
 /* verilator lint_off UNUSEDPARAM */
 module MULT18X18D #(
@@ -58,7 +61,11 @@ module MULT18X18D #(
             || REG_INPUTC_CLK != "NONE" || REG_INPUTA_CE != "CE0" || REG_INPUTB_CE != "CE0"
             || REG_PIPELINE_CE != "CE0" || REG_OUTPUT_CE != "CE0" || REG_INPUTA_RST != "RST0"
             || REG_INPUTB_RST != "RST0" || REG_PIPELINE_RST != "RST0" || REG_OUTPUT_RST != "RST0"
-            || MULT_BYPASS != "DISABLED" || RESETMODE != "SYNC") begin : g_unmodelled
+            || MULT_BYPASS != "DISABLED" || RESETMODE != "SYNC"
+            // the B operand from the B input (SOURCEB = 0); the block's other
+            // modes (C_SHIFT, B_C_DYNAMIC, HIGHSPEED) are not modelled, and
+            // a name the block does not have is refused too
+            || SOURCEB_MODE != "B_SHIFT") begin : g_unmodelled
             initial begin
                 $display("ERROR %m: MULT18X18D mode not modelled by tb/ecp5/MULT18X18D.v");
                 $finish;
