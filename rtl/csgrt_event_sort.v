@@ -17,6 +17,14 @@
 //   PosInf events and events past count_i are dropped.
 //   Slots not written by any leaf of the ray have flag 0.
 //
+// Each event is stored with its key already encoded ({t, tie} above, then
+// slot and entering): the tie policy enters at the input stage only, and
+// the cells' comparators compare stored words without it (it is static
+// during a frame; fanned out to every cell's comparator it was the routed
+// BITS 20 build's critical path). The leaf is decoded from the tie field
+// at the drain bank's head: leaf = ~tie[LB-1:0] for an entering event
+// under the regular policy, tie[LB-1:0] otherwise.
+//
 // Insertion: the fill bank is a sorted array of MAX_EVENTS cells; an input
 // stage sorts the leaf's (up to) two ahead events into a pair a < b, and
 // every cell compares its word with a and with b (two comparators per cell)
@@ -141,20 +149,20 @@ module csgrt_event_sort #(
     localparam NS = 1 << H;
     localparam N  = 2 * MAX_LEAVES;            // MAX_EVENTS
     localparam NB = $clog2(N + 1);             // event count width
-    localparam DW = UW + LB + H + 1;           // stored event {t, leaf, slot, entering}
     localparam KW = UW + LB + 1;               // key {t, tie}
+    localparam DW = KW + H + 1;                // stored event {key, slot, entering}
     localparam [1:0] R_NEGINF = 2'd0, R_FINITE = 2'd1;
 
-    // key of a stored event under the current policy
-    // (e = {t, leaf, slot, entering}; the slot is not part of the key)
-    function [KW-1:0] key_of(input [UW-1:0] t, input [LB-1:0] leaf, input ent, input reg_ties);
+    // the tie field of an event's key under the policy
+    function [LB:0] tie_of(input [LB-1:0] leaf, input ent, input reg_ties);
         begin
-            if (!reg_ties) key_of = {t, 1'b0, leaf};
-            else if (ent)  key_of = {t, 1'b0, ~leaf};
-            else           key_of = {t, 1'b1, leaf};
+            if (!reg_ties) tie_of = {1'b0, leaf};
+            else if (ent)  tie_of = {1'b0, ~leaf};
+            else           tie_of = {1'b1, leaf};
         end
     endfunction
-    `define CSGRT_KEY(e) key_of(e[DW-1 -: UW], e[H+1 +: LB], e[0], ties_regular_i)
+    // the key of a stored event: its top KW bits (the slot is not part of it)
+    `define CSGRT_KEY(e) e[DW-1 -: KW]
 
     // ---- input stage: behind / ahead, origin flag, the pair sorted ------
     wire in_fire = valid_i && ready_o;
@@ -165,8 +173,8 @@ module csgrt_event_sort #(
     wire ahead1  = ev1 && range1_i == R_FINITE && !t1_i[TW-1] && keep1;
     wire behind0 = ev0 && (range0_i == R_NEGINF || (range0_i == R_FINITE && t0_i[TW-1]));
     wire behind1 = ev1 && (range1_i == R_NEGINF || (range1_i == R_FINITE && t1_i[TW-1]));
-    wire [DW-1:0] e0 = {t0_i[UW-1:0], leaf_i, slot_i, enter0_i};
-    wire [DW-1:0] e1 = {t1_i[UW-1:0], leaf_i, slot_i, enter1_i};
+    wire [DW-1:0] e0 = {t0_i[UW-1:0], tie_of(leaf_i, enter0_i, ties_regular_i), slot_i, enter0_i};
+    wire [DW-1:0] e1 = {t1_i[UW-1:0], tie_of(leaf_i, enter1_i, ties_regular_i), slot_i, enter1_i};
     wire          swap = ahead0 && ahead1 && (`CSGRT_KEY(e1) < `CSGRT_KEY(e0));
 
     reg                     s1_valid_q;
@@ -256,7 +264,9 @@ module csgrt_event_sort #(
     assign ev_last_o     = dcnt_q == {{(NB-1){1'b0}}, 1'b1};
     wire [DW-1:0] head   = drain_w[0];
     assign ev_t_o        = {1'b0, head[DW-1 -: UW]};
-    assign ev_leaf_o     = head[H+1 +: LB];
+    wire [LB-1:0] head_tie = head[H+1 +: LB];   // the tie field's leaf bits
+    wire          unused_head_tie_top = head[H+1+LB];   // the order's, not the leaf's
+    assign ev_leaf_o     = (ties_regular_i && head[0]) ? ~head_tie : head_tie;
     assign ev_slot_o     = head[1 +: H];
     assign ev_entering_o = head[0];
     // the head's t against the next cell's: the same-t bit after a pop
