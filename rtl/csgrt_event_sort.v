@@ -26,10 +26,17 @@
 // under the regular policy, tie[LB-1:0] otherwise.
 //
 // Insertion: the fill bank is a sorted array of MAX_EVENTS cells; an input
-// stage sorts the leaf's (up to) two ahead events into a pair a < b, and
-// every cell compares its word with a and with b (two comparators per cell)
-// and picks its next word from itself, a, its left neighbour, b or the cell
-// two to its left: both events are inserted in one clock.
+// stage sorts the leaf's (up to) two ahead events into a pair a < b.
+//   INSERTS = 2: every cell compares its word with a and with b (two
+//     comparators per cell) and picks its next word from itself, a, its
+//     left neighbour, b or the cell two to its left: both events are
+//     inserted in one clock.
+//   INSERTS = 1: every cell compares its word with a alone and picks
+//     itself, a or its left neighbour (one comparator and a 3-way choice
+//     per cell: about a third less logic); a leaf with two events ahead
+//     stays in the input stage for a second clock, b moved into a's place,
+//     and the input is not ready in that clock. The same events in the
+//     same order: only the timing differs.
 //
 // Double buffering: when the fill bank holds a complete ray (its last leaf
 // inserted) and the drain bank is free, the fill bank moves to the drain
@@ -86,9 +93,11 @@
 // k+1; a ray whose last leaf is accepted at edge k is on the drain side
 // (ray_valid_o) after edge k+2 if the drain bank is free. The same with
 // SECONDARY = 1.
-// Throughput: one leaf result (up to two events) per clock, no bubble
-// between rays while the walker keeps up. ready_o is a function of
-// registers only (with SECONDARY = 1: of registers and info_valid_i).
+// Throughput: one leaf result (up to two events) per clock with INSERTS =
+// 2, no bubble between rays while the walker keeps up; with INSERTS = 1 one
+// event per clock (a leaf with two events ahead takes two clocks). ready_o
+// is a function of registers only (with SECONDARY = 1: of registers and
+// info_valid_i).
 module csgrt_event_sort #(
     parameter BITS          = 24,   // coordinate width B; t is F+2 = B-1 bits
     parameter MAX_LEAVES    = 64,   // leaves per ray (events: 2*MAX_LEAVES)
@@ -96,7 +105,8 @@ module csgrt_event_sort #(
     parameter TREE_HEIGHT   = 8,    // slot index width; 2^TREE_HEIGHT origin flags
     parameter PAYLOAD_WIDTH = 1,    // per-ray sideband (>= 1)
     parameter SECONDARY     = 0,    // 1: info stream, secondary rays (see above)
-    parameter LOOK_BEHIND   = 4     // look-behind entries (kLookBehind), >= 1
+    parameter LOOK_BEHIND   = 4,    // look-behind entries (kLookBehind), >= 1
+    parameter INSERTS       = 1     // events inserted per clock: 1 or 2 (see above)
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,           // synchronous, active low
@@ -203,8 +213,11 @@ module csgrt_event_sort #(
     reg [PAYLOAD_WIDTH-1:0] dpay_q;
 
     wire handover = full_q && !busy_q;
-    wire s1_adv   = s1_valid_q && (!full_q || !busy_q);
-    wire in_ready = !s1_valid_q || !full_q || !busy_q;
+    wire s1_adv   = s1_valid_q && (!full_q || !busy_q);   // the stage inserts into the fill bank
+    // INSERTS = 1, two events ahead: this clock inserts a, b stays (split)
+    wire s1_split = (INSERTS == 1) && s1_n_q == 2'd2;
+    wire s1_done  = s1_adv && !s1_split;                   // the leaf leaves the stage
+    wire in_ready = !s1_valid_q || ((!full_q || !busy_q) && !s1_split);
     wire flag_in;                          // the slot's origin flag
     wire [NS-1:0] fix_we, fix_val;         // look-behind fix-up (SECONDARY)
 
@@ -213,7 +226,8 @@ module csgrt_event_sort #(
     wire [KW-1:0] key_a = `CSGRT_KEY(s1_a_q);
     wire [KW-1:0] key_b = `CSGRT_KEY(s1_b_q);
     wire [N-1:0]  lt_a, lt_b;              // cell j holds an event before a / b
-                                           // (a missing event counts as +infinity)
+                                           // (a missing event counts as +infinity;
+                                           // lt_b is unused with INSERTS = 1)
     wire pop;                              // the walker takes the drain bank's cell 0
     genvar j;
     generate
@@ -224,6 +238,17 @@ module csgrt_event_sort #(
             wire [KW-1:0] k    = `CSGRT_KEY(cur);
             wire [DW-1:0] ins;                 // the cell's next word
             assign lt_a[j] = here && (s1_n_q == 2'd0 || k < key_a);   // no event: a = +inf
+            if (INSERTS == 1) begin : g_one
+                // a alone (a split's b comes next clock)
+                assign lt_b[j] = 1'b1;
+                if (j == 0) begin : g_first
+                    assign ins = lt_a[0] ? cur : s1_a_q;
+                end else begin : g_rest
+                    assign ins = lt_a[j]   ? cur :
+                                 lt_a[j-1] ? s1_a_q :
+                                             fill_w[j-1];
+                end
+            end else begin : g_two
             assign lt_b[j] = here && (s1_n_q != 2'd2 || k < key_b);
             if (j == 0) begin : g_first
                 assign ins = lt_a[0] ? cur : s1_a_q;
@@ -237,6 +262,7 @@ module csgrt_event_sort #(
                              lt_b[j-1] ? fill_w[j-1] :
                              lt_b[j-2] ? s1_b_q :
                                          fill_w[j-2];
+            end
             end
             // the drain bank shifts towards cell 0 on a pop
             wire [DW-1:0] next_drain;
@@ -330,7 +356,7 @@ module csgrt_event_sort #(
                         val[s1_lbslot_q[e*H +: H]] = !s1_lbent_q[e];
                     end
             end
-            assign fix_we  = (s1_adv && s1_last_q) ? we : {NS{1'b0}};
+            assign fix_we  = (s1_done && s1_last_q) ? we : {NS{1'b0}};
             assign fix_val = val;
         end else begin : g_pri
             assign ready_o      = in_ready;
@@ -348,6 +374,10 @@ module csgrt_event_sort #(
     integer fs;
     always @(posedge clk_i) begin
         // input stage
+        if (s1_adv && s1_split) begin   // a is in; b waits for the next clock
+            s1_n_q <= 2'd1;
+            s1_a_q <= s1_b_q;
+        end
         if (in_fire) begin
             s1_n_q    <= {1'b0, ahead0} + {1'b0, ahead1};
             s1_a_q    <= (swap || !ahead0) ? e1 : e0;
@@ -363,7 +393,7 @@ module csgrt_event_sort #(
             fflags_q <= {NS{1'b0}};
         end
         if (s1_adv) begin
-            fcnt_q   <= base_cnt + {{(NB-2){1'b0}}, s1_n_q};
+            fcnt_q   <= base_cnt + {{(NB-2){1'b0}}, s1_split ? 2'd1 : s1_n_q};
             fflags_q[s1_slot_q] <= s1_flag_q;
             if (s1_last_q) fpay_q <= s1_pay_q;
         end
@@ -389,8 +419,8 @@ module csgrt_event_sort #(
             fflags_q   <= {NS{1'b0}};
         end else begin
             if (in_fire) s1_valid_q <= 1'b1;
-            else if (s1_adv) s1_valid_q <= 1'b0;
-            if (s1_adv && s1_last_q) full_q <= 1'b1;
+            else if (s1_done) s1_valid_q <= 1'b0;
+            if (s1_done && s1_last_q) full_q <= 1'b1;
             else if (handover) full_q <= 1'b0;
             if (handover) busy_q <= 1'b1;
             else if (ray_done_i) busy_q <= 1'b0;
@@ -398,15 +428,15 @@ module csgrt_event_sort #(
     end
 
     generate
-        if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2 || LOOK_BEHIND < 1) begin : g_bad_param
+        if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2 || LOOK_BEHIND < 1 || (INSERTS != 1 && INSERTS != 2)) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_event_sort needs MAX_LEAVES >= 1, 2^LEAF_BITS >= MAX_LEAVES and LOOK_BEHIND >= 1");
+                $display("ERROR %m: csgrt_event_sort needs MAX_LEAVES >= 1, 2^LEAF_BITS >= MAX_LEAVES, LOOK_BEHIND >= 1 and INSERTS 1 or 2");
                 $finish;
             end
         end
     endgenerate
 
-    wire unused_in = ^{t0_i[TW-1], t1_i[TW-1], lt_b[N-1]};
+    wire unused_in = ^{t0_i[TW-1], t1_i[TW-1], lt_b, key_b};   // lt_b, key_b: unused with INSERTS = 1
 
 `undef CSGRT_KEY
 

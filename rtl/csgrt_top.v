@@ -42,6 +42,7 @@ module csgrt_top #(
     parameter SPECULAR      = 1,     // phong highlights (0: shaded as if every phong were 0)
     parameter CONTEXTS      = 8,     // pixels in flight in the ray tree
     parameter MAX_DEPTH     = 8,     // ray tree depth the stack holds (>= max_trace_level)
+    parameter SORT_INSERTS  = 1,     // events each lane's sorter inserts per clock: 1, or 2 (more logic, 0-3 % fewer cycles)
     // derived
     parameter LEAF_BITS     = $clog2(MAX_LEAVES),
     parameter SLOTS         = 1 << TREE_HEIGHT
@@ -263,7 +264,7 @@ module csgrt_top #(
             csgrt_walk_unit #(
                 .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
                 .MAT_BITS(8), .PAYLOAD_WIDTH(1), .SECONDARY(EFFECTS ? 1 : 0), .LOOK_BEHIND(LOOK_BEHIND),
-                .LOOK_AHEAD(LA ? 1 : 0)
+                .LOOK_AHEAD(LA ? 1 : 0), .SORT_INSERTS(SORT_INSERTS)
             ) u_walk (
                 .clk_i, .rst_ni,
                 .ties_regular_i (ties_regular_q), .node_op_i (node_op), .slot_mat_i (slot_material), .slot_used_i (slot_used),

@@ -46,7 +46,8 @@ module csgrt_walk_unit #(
     parameter PAYLOAD_WIDTH = 1,    // per-ray sideband (>= 1)
     parameter SECONDARY     = 0,    // 1: secondary rays (info stream, run, flags after)
     parameter LOOK_BEHIND   = 4,    // look-behind entries (kLookBehind), >= 1
-    parameter LOOK_AHEAD    = 0     // 1: the refraction look-ahead (csgrt_walker)
+    parameter LOOK_AHEAD    = 0,    // 1: the refraction look-ahead (csgrt_walker)
+    parameter SORT_INSERTS  = 1     // events the sorter inserts per clock, 1 or 2 (csgrt_event_sort)
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,           // synchronous, active low
@@ -131,7 +132,7 @@ module csgrt_walk_unit #(
     csgrt_event_sort #(
         .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS),
         .TREE_HEIGHT(TREE_HEIGHT), .PAYLOAD_WIDTH(PW),
-        .SECONDARY(SECONDARY), .LOOK_BEHIND(LOOK_BEHIND)
+        .SECONDARY(SECONDARY), .LOOK_BEHIND(LOOK_BEHIND), .INSERTS(SORT_INSERTS)
     ) u_sort (
         .clk_i(clk_i), .rst_ni(rst_ni), .ties_regular_i(ties_regular_i),
         .valid_i(valid_i), .ready_o(ready_o), .slot_i(slot_i), .leaf_i(leaf_i), .count_i(count_i),
