@@ -168,6 +168,7 @@ BAUD ?= 3000000
 synth: deps
 	@tools/synth.sh --bits $(BITS) --effects $(if $(filter scene,$(EFFECTS)),none,$(EFFECTS)) \
 	    $(if $(filter 0,$(SPECULAR)),--no-specular) $(if $(filter 2,$(SORT_INSERTS)),--sort-inserts 2) \
+	    $(if $(filter-out 1,$(UNITS)),--units $(UNITS)) \
 	    --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
 
 # the board top in Verilator with a UART model (tb/board/), built as the
