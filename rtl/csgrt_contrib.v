@@ -67,14 +67,19 @@ module csgrt_contrib #(
     reg [3*LW-1:0]   c1_l_q;
     reg [47:0]       c1_w_q;
     reg [TAG_W-1:0]  c1_tag_q;
+    // its own loop variable (one shared with the other always blocks is a
+    // variable with several drivers to yosys)
+    reg [3*LW-1:0]   l_d;
+    integer c_l;
+    always @* for (c_l = 0; c_l < 3; c_l = c_l + 1)
+        l_d[c_l*LW +: LW] = c0_tr
+            ? kd[c_l*DP +: LW] + {1'b0, c0_spec[c_l*COL_W +: COL_W]}   // kd <= diff: fits LW
+            : {1'b0, c0_local[c_l*COL_W +: COL_W]};
     always @(posedge clk_i) begin
         if (!rst_ni) c1_valid_q <= 1'b0;
         else if (en) c1_valid_q <= c0_valid;
         if (en) begin
-            for (c = 0; c < 3; c = c + 1)
-                c1_l_q[c*LW +: LW] <= c0_tr
-                    ? kd[c*DP +: LW] + {1'b0, c0_spec[c*COL_W +: COL_W]}   // kd <= diff: fits LW
-                    : {1'b0, c0_local[c*COL_W +: COL_W]};
+            c1_l_q   <= l_d;
             c1_w_q   <= c0_w;
             c1_tag_q <= c0_tag;
         end
@@ -97,8 +102,9 @@ module csgrt_contrib #(
         .clk_i, .rst_ni, .ce_i(en), .valid_i(c1_valid_q), .a_i(c1_w_q), .b_i(c1_l_q), .user_i(c1_tag_q),
         .valid_o(c2_valid), .p_o(wl), .user_o(c2_tag));
     reg [38:0] contrib;
-    always @* for (c = 0; c < 3; c = c + 1)
-        contrib[c*13 +: 13] = (|wl[c*CP + 12 +: CP - 12]) ? 13'd4095 : wl[c*CP +: 13];
+    integer c_out;
+    always @* for (c_out = 0; c_out < 3; c_out = c_out + 1)
+        contrib[c_out*13 +: 13] = (|wl[c_out*CP + 12 +: CP - 12]) ? 13'd4095 : wl[c_out*CP +: 13];
 
     csgrt_skid #(.WIDTH(TAG_W + 39)) u_skid (
         .clk_i, .rst_ni, .valid_i(c2_valid), .ready_o(en), .data_i({contrib, c2_tag}),

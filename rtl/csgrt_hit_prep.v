@@ -151,7 +151,17 @@ module csgrt_hit_prep #(
     reg           x1_in_range_q;
     reg [47:0]    x1_ft_q, x1_wr_q;
     reg [38:0]    x1_bg_q;
+    // each always block has its own loop variable (one shared by several
+    // blocks is a variable with several drivers to yosys)
     integer c;
+    reg [47:0] ft_sat, wr_sat;
+    reg [38:0] bg_sat;
+    integer c_x1;
+    always @* for (c_x1 = 0; c_x1 < 3; c_x1 = c_x1 + 1) begin
+        ft_sat[c_x1*16 +: 16] = sat16(ft_w[c_x1*WP +: WP]);
+        wr_sat[c_x1*16 +: 16] = sat16(wr_w[c_x1*WP +: WP]);
+        bg_sat[c_x1*13 +: 13] = sat4095(bg_w[c_x1*WP +: WP]);
+    end
     always @(posedge clk_i) begin
         if (!rst_ni) x1_valid_q <= 1'b0;
         else if (en) x1_valid_q <= x0_valid;
@@ -159,11 +169,9 @@ module csgrt_hit_prep #(
             x1_x_q        <= x0_x;
             x1_p_q        <= p_d;
             x1_in_range_q <= &p_ok;
-            for (c = 0; c < 3; c = c + 1) begin
-                x1_ft_q[c*16 +: 16] <= sat16(ft_w[c*WP +: WP]);
-                x1_wr_q[c*16 +: 16] <= sat16(wr_w[c*WP +: WP]);
-                x1_bg_q[c*13 +: 13] <= sat4095(bg_w[c*WP +: WP]);
-            end
+            x1_ft_q       <= ft_sat;
+            x1_wr_q       <= wr_sat;
+            x1_bg_q       <= bg_sat;
         end
     end
     localparam XO = 4 + 3 * B;   // where w starts in the pipeline word
@@ -230,6 +238,9 @@ module csgrt_hit_prep #(
             ends = 1'b0;
         end
     end
+    reg [47:0] wt_sat;
+    integer c_x3;
+    always @* for (c_x3 = 0; c_x3 < 3; c_x3 = c_x3 + 1) wt_sat[c_x3*16 +: 16] = sat16(wt_w[c_x3*WP +: WP]);
     always @(posedge clk_i) begin
         if (!rst_ni) x3_valid_q <= 1'b0;
         else if (en) x3_valid_q <= x2_valid;
@@ -240,7 +251,7 @@ module csgrt_hit_prep #(
             x3_tlimit_q <= left[DIST_W-1:0];
             x3_light_q  <= x2_light;
             x3_y_q      <= x2_y;
-            for (c = 0; c < 3; c = c + 1) x3_wt_q[c*16 +: 16] <= sat16(wt_w[c*WP +: WP]);
+            x3_wt_q     <= wt_sat;
         end
     end
 
@@ -255,7 +266,8 @@ module csgrt_hit_prep #(
         .user_i({x3_ends_q, x3_tlimit_q, x3_atten_q, x3_wt_q, x3_y_q}),
         .valid_o(x4_valid), .p_o(sc_w), .user_o(x4_z));
     reg [47:0] sc;
-    always @* for (c = 0; c < 3; c = c + 1) sc[c*16 +: 16] = sat16(sc_w[c*WP +: WP]);
+    integer c_sc;
+    always @* for (c_sc = 0; c_sc < 3; c_sc = c_sc + 1) sc[c_sc*16 +: 16] = sat16(sc_w[c_sc*WP +: WP]);
 
     // ---- output skid, and the record FIFO --------------------------------------------
     localparam OW = ZW + 48;
