@@ -238,20 +238,19 @@ module csgrt_event_sort #(
             wire [KW-1:0] k    = `CSGRT_KEY(cur);
             wire [DW-1:0] ins;                 // the cell's next word
             assign lt_a[j] = here && (s1_n_q == 2'd0 || k < key_a);   // no event: a = +inf
-            if (INSERTS == 1) begin : g_one
-                // a alone (a split's b comes next clock)
+            // b: only the two-insertion array compares with it (with one,
+            // a split leaf's b is the next clock's a)
+            if (INSERTS == 1) begin : g_b_one
                 assign lt_b[j] = 1'b1;
-                if (j == 0) begin : g_first
-                    assign ins = lt_a[0] ? cur : s1_a_q;
-                end else begin : g_rest
-                    assign ins = lt_a[j]   ? cur :
-                                 lt_a[j-1] ? s1_a_q :
-                                             fill_w[j-1];
-                end
-            end else begin : g_two
-            assign lt_b[j] = here && (s1_n_q != 2'd2 || k < key_b);
+            end else begin : g_b_two
+                assign lt_b[j] = here && (s1_n_q != 2'd2 || k < key_b);
+            end
             if (j == 0) begin : g_first
                 assign ins = lt_a[0] ? cur : s1_a_q;
+            end else if (INSERTS == 1) begin : g_one
+                assign ins = lt_a[j]   ? cur :
+                             lt_a[j-1] ? s1_a_q :
+                                         fill_w[j-1];
             end else if (j == 1) begin : g_second
                 assign ins = lt_a[1] ? cur :
                              lt_a[0] ? s1_a_q :
@@ -262,7 +261,6 @@ module csgrt_event_sort #(
                              lt_b[j-1] ? fill_w[j-1] :
                              lt_b[j-2] ? s1_b_q :
                                          fill_w[j-2];
-            end
             end
             // the drain bank shifts towards cell 0 on a pop
             wire [DW-1:0] next_drain;
