@@ -16,9 +16,14 @@
 //   C2 mul (2)  w L
 //   skid (1)
 // Latency 6 clocks, one record per clock. Multipliers: 6.
+// II = 3 (time-shared, csgrt_beat): a record every third clock, the three
+// channels of each product on one multiplier (csgrt_weigh, 2 multipliers),
+// the record registered on entry (the shared multiplier reads it for a
+// whole beat); latency 7 beats.
 module csgrt_contrib #(
     parameter COL_W = 31,    // local colour bits (csgrt_shade's CLW)
-    parameter TAG_W = 3
+    parameter TAG_W = 3,
+    parameter II    = 1      // running clocks per record: 1 or 3
 ) (
     input  wire               clk_i,
     input  wire               rst_ni,
@@ -39,22 +44,48 @@ module csgrt_contrib #(
     localparam LW = COL_W + 1;         // L
     localparam CP = 16 + LW - 11;      // rnd(w L)
 
-    wire en;
-    assign s_ready_o = en;
+    wire       en;    // the pipeline runs: the output skid's ready
+    wire [1:0] ph;
+    wire       adv;   // the beat's advance: every register but the multipliers' moves on it
+    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .phase_o(ph), .adv_o(adv));
+    wire last = (II == 1) || (ph == 2'd2);
+    assign s_ready_o = adv;
+
+    // ---- input: registered for II = 3 (steady for the shared multiplier's beat) ----
+    localparam IW = TAG_W + 6 * COL_W + 1 + 16 + 48;
+    wire          i_valid;
+    wire [IW-1:0] i_rec;
+    generate
+        if (II == 1) begin : g_in_direct
+            assign i_valid = s_valid_i;
+            assign i_rec   = {s_w_i, s_filter_i, s_transmits_i, s_spec_i, s_local_i, s_tag_i};
+        end else begin : g_in_reg
+            csgrt_delay #(.WIDTH(IW), .STAGES(1)) u_in (
+                .clk_i, .rst_ni, .ce_i(adv), .valid_i(s_valid_i),
+                .data_i({s_w_i, s_filter_i, s_transmits_i, s_spec_i, s_local_i, s_tag_i}),
+                .valid_o(i_valid), .data_o(i_rec));
+        end
+    endgenerate
+    wire [TAG_W-1:0]   i_tag    = i_rec[0 +: TAG_W];
+    wire [3*COL_W-1:0] i_local  = i_rec[TAG_W +: 3*COL_W];
+    wire [3*COL_W-1:0] i_spec   = i_rec[TAG_W + 3*COL_W +: 3*COL_W];
+    wire               i_tr     = i_rec[TAG_W + 6*COL_W];
+    wire [15:0]        i_filter = i_rec[TAG_W + 6*COL_W + 1 +: 16];
+    wire [47:0]        i_w      = i_rec[TAG_W + 6*COL_W + 17 +: 48];
 
     reg [3*COL_W-1:0] diff;
     integer c;
-    always @* for (c = 0; c < 3; c = c + 1) diff[c*COL_W +: COL_W] = s_local_i[c*COL_W +: COL_W] - s_spec_i[c*COL_W +: COL_W];
-    wire [15:0] keep = 16'd4096 - s_filter_i;
+    always @* for (c = 0; c < 3; c = c + 1) diff[c*COL_W +: COL_W] = i_local[c*COL_W +: COL_W] - i_spec[c*COL_W +: COL_W];
+    wire [15:0] keep = 16'd4096 - i_filter;
 
     // ---- C0 ----------------------------------------------------------------------
     localparam UW0 = TAG_W + 3 * COL_W + 3 * COL_W + 1 + 48;
     wire [3*DP-1:0] kd;
     wire            c0_valid;
     wire [UW0-1:0]  c0_u;
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(COL_W), .USER_WIDTH(UW0)) u_keep (
-        .clk_i, .rst_ni, .ce_i(en), .valid_i(s_valid_i), .a_i({3{keep}}), .b_i(diff),
-        .user_i({s_w_i, s_transmits_i, s_spec_i, s_local_i, s_tag_i}),
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(COL_W), .USER_WIDTH(UW0), .II(II)) u_keep (
+        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(i_valid), .a_i({3{keep}}), .b_i(diff),
+        .user_i({i_w, i_tr, i_spec, i_local, i_tag}),
         .valid_o(c0_valid), .p_o(kd), .user_o(c0_u));
     wire [TAG_W-1:0]   c0_tag   = c0_u[0 +: TAG_W];
     wire [3*COL_W-1:0] c0_local = c0_u[TAG_W +: 3*COL_W];
@@ -77,8 +108,8 @@ module csgrt_contrib #(
             : {1'b0, c0_local[c_l*COL_W +: COL_W]};
     always @(posedge clk_i) begin
         if (!rst_ni) c1_valid_q <= 1'b0;
-        else if (en) c1_valid_q <= c0_valid;
-        if (en) begin
+        else if (adv) c1_valid_q <= c0_valid;
+        if (adv) begin
             c1_l_q   <= l_d;
             c1_w_q   <= c0_w;
             c1_tag_q <= c0_tag;
@@ -98,8 +129,8 @@ module csgrt_contrib #(
     wire [3*CP-1:0]  wl;
     wire             c2_valid;
     wire [TAG_W-1:0] c2_tag;
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(LW), .USER_WIDTH(TAG_W)) u_w (
-        .clk_i, .rst_ni, .ce_i(en), .valid_i(c1_valid_q), .a_i(c1_w_q), .b_i(c1_l_q), .user_i(c1_tag_q),
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(LW), .USER_WIDTH(TAG_W), .II(II)) u_w (
+        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(c1_valid_q), .a_i(c1_w_q), .b_i(c1_l_q), .user_i(c1_tag_q),
         .valid_o(c2_valid), .p_o(wl), .user_o(c2_tag));
     reg [38:0] contrib;
     integer c_out;
@@ -107,7 +138,7 @@ module csgrt_contrib #(
         contrib[c_out*13 +: 13] = (|wl[c_out*CP + 12 +: CP - 12]) ? 13'd4095 : wl[c_out*CP +: 13];
 
     csgrt_skid #(.WIDTH(TAG_W + 39)) u_skid (
-        .clk_i, .rst_ni, .valid_i(c2_valid), .ready_o(en), .data_i({contrib, c2_tag}),
+        .clk_i, .rst_ni, .valid_i(c2_valid && last), .ready_o(en), .data_i({contrib, c2_tag}),
         .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_contrib_o, m_tag_o}));
 endmodule
 `default_nettype wire

@@ -37,12 +37,17 @@
 // Latency 9 clocks; one record per clock. The record's other fields (ray,
 // hit, material, flags) wait in a FIFO beside the pipeline and come out
 // with the results. Multipliers: 3 + 9 + 6 + 3 = 21.
+// II = 3 (time-shared, csgrt_beat): a record every third clock, the three
+// axes or channels of each product on one multiplier (csgrt_mul_vec,
+// csgrt_weigh: 7 multipliers), the operands registered on entry (the
+// shared multipliers read them for a whole beat); latency 10 beats.
 module csgrt_hit_prep #(
     parameter BITS       = 24,
     parameter MAX_LIGHTS = 8,
     parameter DIST_W     = 27,    // shadow ray distance / t limit (unsigned, F fraction bits)
     parameter REC_W      = 8,     // the record waiting beside the pipeline
-    parameter MAX_CROSS  = 16     // crossings a shadow ray follows (model: kMaxShadowCrossings)
+    parameter MAX_CROSS  = 16,    // crossings a shadow ray follows (model: kMaxShadowCrossings)
+    parameter II         = 1      // running clocks per record: 1 or 3
 ) (
     input  wire                      clk_i,
     input  wire                      rst_ni,
@@ -86,41 +91,63 @@ module csgrt_hit_prep #(
     localparam KW = (MAX_LIGHTS > 1) ? $clog2(MAX_LIGHTS) : 1;
     localparam PW = B + 2;                    // o + rnd(t d): |p| < 6 before the range check
 
-    wire en;                                  // global stage enable
+    wire       en;    // the pipeline runs: the output skid's ready
+    wire [1:0] ph;
+    wire       adv;   // the beat's advance: every register but the multipliers' moves on it
+    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .phase_o(ph), .adv_o(adv));
+    wire last = (II == 1) || (ph == 2'd2);
     wire fifo_ready;
-    assign s_ready_o = en && fifo_ready;
+    assign s_ready_o = adv && fifo_ready;
     wire take = s_valid_i && s_ready_o;
 
     genvar i;
 
-    // ---- X0: products ----------------------------------------------------------
-    wire [3*(TW+B)-1:0] td;
+    // ---- input: registered for II = 3 (steady for the shared multipliers' beat) ----
+    // {x word: tlimit, t, cross, light, atten, w, o, opaque, to_air, hit, shadow; d, rgb, filter, reflection}
+    localparam XW = DIST_W + TW + 5 + KW + 48 + 48 + 3 * B + 4;
+    localparam IW = XW + 3 * B + 48 + 16 + 16;
+    wire          s_opaque = !s_to_air_i && (s_filter_i == 16'd0);
+    wire [IW-1:0] s_word = {s_reflection_i, s_filter_i, s_rgb_i, s_d_i,
+                            s_tlimit_i, s_t_i, s_cross_i, s_light_i, s_atten_i, s_w_i, s_o_i,
+                            s_opaque, s_to_air_i, s_hit_i, s_shadow_i};
+    wire          i_valid;
+    wire [IW-1:0] i_word;
     generate
-        for (i = 0; i < 3; i = i + 1) begin : g_td
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(TW), .B_WIDTH(B)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(take),
-                .a_i(s_t_i), .b_i(s_d_i[i*B +: B]), .valid_o(unused_v), .p_o(td[i*(TW+B) +: TW+B]));
+        if (II == 1) begin : g_in_direct
+            assign i_valid = take;
+            assign i_word  = s_word;
+        end else begin : g_in_reg
+            csgrt_delay #(.WIDTH(IW), .STAGES(1)) u_in (
+                .clk_i, .rst_ni, .ce_i(adv), .valid_i(take), .data_i(s_word),
+                .valid_o(i_valid), .data_o(i_word));
         end
     endgenerate
+    wire [XW-1:0]  i_x          = i_word[0 +: XW];
+    wire [TW-1:0]  i_t          = i_x[4 + 3*B + 96 + KW + 5 +: TW];
+    wire [47:0]    i_w          = i_x[4 + 3*B +: 48];
+    wire [3*B-1:0] i_d          = i_word[XW +: 3*B];
+    wire [47:0]    i_rgb        = i_word[XW + 3*B +: 48];
+    wire [15:0]    i_filter     = i_word[XW + 3*B + 48 +: 16];
+    wire [15:0]    i_reflection = i_word[XW + 3*B + 64 +: 16];
+
+    // ---- X0: products ----------------------------------------------------------
+    wire [3*(TW+B)-1:0] td;
+    csgrt_mul_vec #(.A_WIDTH(TW), .B_WIDTH(B), .N(3), .II(II)) u_td (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .phase_i(ph), .a_i({3{i_t}}), .b_i(i_d), .p_o(td));
     localparam WP = 21;   // rnd(16-bit x 16-bit, 12)
     wire [3*WP-1:0] ft_w, bg_w, wr_w;
     wire unused_v0, unused_v1, unused_u0, unused_u1;
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16)) u_ft (
-        .clk_i, .rst_ni, .ce_i(en), .valid_i(take), .a_i({3{s_filter_i}}), .b_i(s_rgb_i), .user_i(1'b0),
-        .valid_o(unused_v0), .p_o(ft_w), .user_o(unused_u0));
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16)) u_bg (
-        .clk_i, .rst_ni, .ce_i(en), .valid_i(take), .a_i(s_w_i), .b_i(background_i), .user_i(1'b0),
-        .valid_o(unused_v1), .p_o(bg_w), .user_o(unused_u1));
-    // pipeline word carried to the end: {tlimit, t, cross, light, atten, w, o, opaque, to_air, hit, shadow}
-    localparam XW = DIST_W + TW + 5 + KW + 48 + 48 + 3 * B + 4;
-    wire s_opaque = !s_to_air_i && (s_filter_i == 16'd0);
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .II(II)) u_ft (
+        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(i_valid), .a_i({3{i_filter}}), .b_i(i_rgb),
+        .user_i(1'b0), .valid_o(unused_v0), .p_o(ft_w), .user_o(unused_u0));
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .II(II)) u_bg (
+        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(i_valid), .a_i(i_w), .b_i(background_i),
+        .user_i(1'b0), .valid_o(unused_v1), .p_o(bg_w), .user_o(unused_u1));
     wire          x0_valid;
     wire [XW-1:0] x0_x;
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(XW)) u_wr (
-        .clk_i, .rst_ni, .ce_i(en), .valid_i(take), .a_i(s_w_i), .b_i({3{s_reflection_i}}),
-        .user_i({s_tlimit_i, s_t_i, s_cross_i, s_light_i, s_atten_i, s_w_i, s_o_i, s_opaque, s_to_air_i, s_hit_i, s_shadow_i}),
-        .valid_o(x0_valid), .p_o(wr_w), .user_o(x0_x));
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(XW), .II(II)) u_wr (
+        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(i_valid), .a_i(i_w), .b_i({3{i_reflection}}),
+        .user_i(i_x), .valid_o(x0_valid), .p_o(wr_w), .user_o(x0_x));
     wire [3*B-1:0] x0_o = x0_x[4 +: 3*B];
 
     // ---- X1: hit point, range, ft --------------------------------------------------
@@ -164,8 +191,8 @@ module csgrt_hit_prep #(
     end
     always @(posedge clk_i) begin
         if (!rst_ni) x1_valid_q <= 1'b0;
-        else if (en) x1_valid_q <= x0_valid;
-        if (en) begin
+        else if (adv) x1_valid_q <= x0_valid;
+        if (adv) begin
             x1_x_q        <= x0_x;
             x1_p_q        <= p_d;
             x1_in_range_q <= &p_ok;
@@ -184,11 +211,11 @@ module csgrt_hit_prep #(
     wire            x2_valid;
     wire [YW-1:0]   x2_y;
     wire unused_v2, unused_u2;
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16)) u_wt (
-        .clk_i, .rst_ni, .ce_i(en), .valid_i(x1_valid_q), .a_i(x1_w), .b_i(x1_ft_q), .user_i(1'b0),
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .II(II)) u_wt (
+        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(x1_valid_q), .a_i(x1_w), .b_i(x1_ft_q), .user_i(1'b0),
         .valid_o(unused_v2), .p_o(wt_w), .user_o(unused_u2));
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(YW)) u_at (
-        .clk_i, .rst_ni, .ce_i(en), .valid_i(x1_valid_q), .a_i(x1_atten), .b_i(x1_ft_q),
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(YW), .II(II)) u_at (
+        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(x1_valid_q), .a_i(x1_atten), .b_i(x1_ft_q),
         .user_i({x1_bg_q, x1_wr_q, x1_in_range_q, x1_p_q, x1_x_q}),
         .valid_o(x2_valid), .p_o(at_w), .user_o(x2_y));
     wire [XW-1:0]     x2_x        = x2_y[0 +: XW];
@@ -243,8 +270,8 @@ module csgrt_hit_prep #(
     always @* for (c_x3 = 0; c_x3 < 3; c_x3 = c_x3 + 1) wt_sat[c_x3*16 +: 16] = sat16(wt_w[c_x3*WP +: WP]);
     always @(posedge clk_i) begin
         if (!rst_ni) x3_valid_q <= 1'b0;
-        else if (en) x3_valid_q <= x2_valid;
-        if (en) begin
+        else if (adv) x3_valid_q <= x2_valid;
+        if (adv) begin
             x3_ends_q   <= ends || !x2_shadow;
             x3_term_q   <= term;
             x3_atten_q  <= atten_next;
@@ -261,8 +288,8 @@ module csgrt_hit_prep #(
     wire            x4_valid;
     wire [ZW-1:0]   x4_z;
     wire [47:0]     lc = light_color_i[x3_light_q * 48 +: 48];
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(ZW)) u_sc (
-        .clk_i, .rst_ni, .ce_i(en), .valid_i(x3_valid_q), .a_i(lc), .b_i(x3_term_q),
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(ZW), .II(II)) u_sc (
+        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(x3_valid_q), .a_i(lc), .b_i(x3_term_q),
         .user_i({x3_ends_q, x3_tlimit_q, x3_atten_q, x3_wt_q, x3_y_q}),
         .valid_o(x4_valid), .p_o(sc_w), .user_o(x4_z));
     reg [47:0] sc;
@@ -274,7 +301,7 @@ module csgrt_hit_prep #(
     wire [OW-1:0] out_w;
     wire          out_valid;
     csgrt_skid #(.WIDTH(OW)) u_skid (
-        .clk_i, .rst_ni, .valid_i(x4_valid), .ready_o(en), .data_i({sc, x4_z}),
+        .clk_i, .rst_ni, .valid_i(x4_valid && last), .ready_o(en), .data_i({sc, x4_z}),
         .valid_o(out_valid), .ready_i(m_ready_i), .data_o(out_w));
     wire          rec_valid;
     csgrt_fifo #(.WIDTH(REC_W), .DEPTH(16)) u_rec (

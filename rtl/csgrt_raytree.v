@@ -51,6 +51,7 @@ module csgrt_raytree #(
     parameter COL_W       = 31,      // csgrt_shade's linear colour
     parameter SPEC_W      = 26,
     parameter LUT_FILE    = "rtl/srgb_lut.hex",
+    parameter II          = 1,       // hit_prep's and contrib's clocks per record: 1, or 3 on a third of the multipliers
     // derived
     parameter NS          = 1 << TREE_HEIGHT,
     parameter CB          = $clog2(CONTEXTS),
@@ -237,7 +238,7 @@ module csgrt_raytree #(
     wire [47:0]        tr_atten  = tr_rec_i[1 + CB + KW + 52 +: 48];
     wire [4:0]         tr_cross  = tr_rec_i[1 + CB + KW + 100 +: 5];
     wire [DIST_W-1:0]  tr_tlimit = tr_rec_i[1 + CB + KW + 105 +: DIST_W];
-    csgrt_hit_prep #(.BITS(B), .MAX_LIGHTS(MAX_LIGHTS), .DIST_W(DIST_W), .REC_W(TREC_W)) u_prep (
+    csgrt_hit_prep #(.BITS(B), .MAX_LIGHTS(MAX_LIGHTS), .DIST_W(DIST_W), .REC_W(TREC_W), .II(II)) u_prep (
         .clk_i, .rst_ni, .background_i, .light_color_i,
         .s_valid_i (tr_valid_i), .s_ready_o (tr_ready_o),
         .s_shadow_i (tr_shadow), .s_light_i (tr_light), .s_w_i (tr_w), .s_atten_i (tr_atten),
@@ -282,7 +283,7 @@ module csgrt_raytree #(
     integer c;
     always @* for (c = 0; c < 3; c = c + 1)
         sr_spec_x[c*COL_W +: COL_W] = {{(COL_W-SPEC_W){1'b0}}, sr_spec_i[c*SPEC_W +: SPEC_W]};
-    csgrt_contrib #(.COL_W(COL_W), .TAG_W(CB)) u_contrib (
+    csgrt_contrib #(.COL_W(COL_W), .TAG_W(CB), .II(II)) u_contrib (
         .clk_i, .rst_ni, .s_valid_i (sr_valid_i), .s_ready_o (sr_ready_o), .s_tag_i (sr_ctx),
         .s_local_i (sr_local_i), .s_spec_i (sr_spec_x), .s_transmits_i (tx_q[sr_ctx]),
         .s_filter_i (hmat_q[sr_ctx][M_FILTER +: 16]), .s_w_i (w_q[sr_ctx]),

@@ -84,7 +84,12 @@ module csgrt_shade #(
     parameter EXT_LIGHT  = 0,
     // 1: phong highlights (the specular unit); 0: shaded as if every phong
     // were 0, without the hardware that computes highlights
-    parameter SPECULAR   = 1
+    parameter SPECULAR   = 1,
+    // running clocks per beat: 1 = a pixel into segment A and a light item
+    // into segment B every clock; 3 = one every third clock, each stage's
+    // products on one multiplier serving them in turn (csgrt_mul_vec), the
+    // same results
+    parameter II         = 1
 ) (
     input  wire                          clk_i,
     input  wire                          rst_ni,         // synchronous, active low
@@ -153,33 +158,66 @@ module csgrt_shade #(
     localparam PX_HIT = 24, PX_RGB = 25, PX_AMB = 73, PX_DIF = 89, PX_PH = 105,
                PX_PHS = 121;
 
-    wire en_a;   // segment A enable: skid A's ready
-    wire en_b;   // segment B and C enable: output skid's ready
-    assign s_ready_o = en_a;
+    wire en_a;   // segment A runs: skid A's ready
+    wire en_b;   // segments B and C run: the output skid's ready
+    // Each segment moves on its beat's advance (every running clock for
+    // II = 1, every third for II = 3); the shared multipliers run on every
+    // running clock. An item enters a segment and leaves it for a skid
+    // only at an advance.
+    wire [1:0] ph_a, ph_b;
+    wire       adv_a, adv_b;
+    csgrt_beat #(.II(II)) u_beat_a (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_o(ph_a), .adv_o(adv_a));
+    csgrt_beat #(.II(II)) u_beat_b (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_o(ph_b), .adv_o(adv_b));
+    wire last_a = (II == 1) || (ph_a == 2'd2);   // a beat's last clock
+    wire last_b = (II == 1) || (ph_b == 2'd2);
+    assign s_ready_o = adv_a;
 
     genvar i, j;
 
     // =========================================================================
     // Segment A: per pixel
     // =========================================================================
-    // ---- A0: t d_i ---------------------------------------------------------
-    wire [3*(TW+B)-1:0] td;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_a0
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(TW), .B_WIDTH(B)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(s_valid_i),
-                .a_i(s_t_i), .b_i(s_d_i[i*B +: B]), .valid_o(unused_v), .p_o(td[i*(TW+B) +: TW+B]));
-        end
-    endgenerate
+    // ---- input: II = 3 registers the pixel, whose t and d the shared A0
+    // multiplier reads for a whole beat (II = 1: straight through) -----------
     wire [PIXW-1:0] s_pix = {s_phong_size_i, s_phong_i, s_diffuse_i, s_ambient_i, s_rgb_i, s_hit_i, s_y_i, s_x_i};
     localparam A0W = PIXW + 15 * B;
     wire unused_q = ^s_coef_i[9*B +: B];   // the constant term does not enter the gradient
+    wire           in_valid;
+    wire [A0W-1:0] in_side;   // {pix, coef (9), d, o}
+    wire [TW-1:0]  in_t;
+    generate
+        if (II == 1) begin : g_in_direct
+            assign in_valid = s_valid_i;
+            assign in_side  = {s_pix, s_coef_i[0 +: 9*B], s_d_i, s_o_i};
+            assign in_t     = s_t_i;
+        end else begin : g_in_reg
+            reg           in_valid_q;
+            reg [A0W-1:0] in_side_q;
+            reg [TW-1:0]  in_t_q;
+            always @(posedge clk_i) begin
+                if (!rst_ni) in_valid_q <= 1'b0;
+                else if (adv_a) in_valid_q <= s_valid_i;
+                if (adv_a) begin
+                    in_side_q <= {s_pix, s_coef_i[0 +: 9*B], s_d_i, s_o_i};
+                    in_t_q    <= s_t_i;
+                end
+            end
+            assign in_valid = in_valid_q;
+            assign in_side  = in_side_q;
+            assign in_t     = in_t_q;
+        end
+    endgenerate
+
+    // ---- A0: t d_i ---------------------------------------------------------
+    wire [3*(TW+B)-1:0] td;
+    csgrt_mul_vec #(.A_WIDTH(TW), .B_WIDTH(B), .N(3), .II(II)) u_mul_a0 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a),
+        .a_i({3{in_t}}), .b_i(in_side[3*B +: 3*B]), .p_o(td));
     wire           a0_valid;
     wire [A0W-1:0] a0_side;
     csgrt_delay #(.WIDTH(A0W), .STAGES(2)) u_dly_a0 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(s_valid_i),
-        .data_i({s_pix, s_coef_i[0 +: 9*B], s_d_i, s_o_i}), .valid_o(a0_valid), .data_o(a0_side));
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .valid_i(in_valid),
+        .data_i(in_side), .valid_o(a0_valid), .data_o(a0_side));
     wire [3*B-1:0]  a0_o    = a0_side[0 +: 3*B];
     wire [3*B-1:0]  a0_d    = a0_side[3*B +: 3*B];
     wire [9*B-1:0]  a0_coef = a0_side[6*B +: 9*B];
@@ -214,8 +252,8 @@ module csgrt_shade #(
     reg [PIXW-1:0]   a1_pix_q;
     always @(posedge clk_i) begin
         if (!rst_ni) a1_valid_q <= 1'b0;
-        else if (en_a) a1_valid_q <= a0_valid;
-        if (en_a) begin
+        else if (adv_a) a1_valid_q <= a0_valid;
+        if (adv_a) begin
             a1_ps_q  <= ps_d;
             a1_ds_q  <= ds_d;
             a1_ks_q  <= ks_d;
@@ -228,21 +266,22 @@ module csgrt_shade #(
     wire [9*GPW-1:0] gp;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_a2_row
+            // row i: the coefficients A_i0, A_i1, A_i2 (CoefIndex order)
+            wire [3*KSW-1:0] ks_row;
             for (j = 0; j < 3; j = j + 1) begin : g_a2_col
                 localparam CI = (i == j) ? i : (i + j == 1) ? 3 : (i + j == 2) ? 4 : 5;
-                wire unused_v;
-                csgrt_mul #(.A_WIDTH(KSW), .B_WIDTH(PSW)) u_mul (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a1_valid_q),
-                    .a_i(a1_ks_q[CI*KSW +: KSW]), .b_i(a1_ps_q[j*PSW +: PSW]),
-                    .valid_o(unused_v), .p_o(gp[(3*i+j)*GPW +: GPW]));
+                assign ks_row[j*KSW +: KSW] = a1_ks_q[CI*KSW +: KSW];
             end
+            csgrt_mul_vec #(.A_WIDTH(KSW), .B_WIDTH(PSW), .N(3), .II(II)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a),
+                .a_i(ks_row), .b_i(a1_ps_q), .p_o(gp[3*i*GPW +: 3*GPW]));
         end
     endgenerate
     localparam A2W = PIXW + 3 * PSW + 3 * DSW + 3 * KSW;
     wire           a2_valid;
     wire [A2W-1:0] a2_side;
     csgrt_delay #(.WIDTH(A2W), .STAGES(2)) u_dly_a2 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a1_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .valid_i(a1_valid_q),
         .data_i({a1_pix_q, a1_ks_q[6*KSW +: 3*KSW], a1_ds_q, a1_ps_q}), .valid_o(a2_valid), .data_o(a2_side));
     localparam PDW = 3 * PSW + 3 * DSW;   // {ds, ps}
     wire [3*KSW-1:0] a2_kp  = a2_side[PDW +: 3*KSW];
@@ -271,8 +310,8 @@ module csgrt_shade #(
     reg [PIXW-1:0]  a3_pix_q;
     always @(posedge clk_i) begin
         if (!rst_ni) a3_valid_q <= 1'b0;
-        else if (en_a) a3_valid_q <= a2_valid;
-        if (en_a) begin
+        else if (adv_a) a3_valid_q <= a2_valid;
+        if (adv_a) begin
             a3_g_q   <= g_d;
             a3_pd_q  <= a2_pd;
             a3_pix_q <= a2_pix;
@@ -284,8 +323,8 @@ module csgrt_shade #(
     wire             a9_valid;
     wire [3*NVW-1:0] a9_n;
     wire [A4W-1:0]   a9_side;
-    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(A4W)) u_unit_n (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a3_valid_q),
+    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(A4W), .II(II)) u_unit_n (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a), .valid_i(a3_valid_q),
         .v_i(a3_g_q), .user_i({a3_pix_q, a3_pd_q}),
         .valid_o(a9_valid), .u_o(a9_n), .user_o(a9_side));
     wire [3*DSW-1:0] a9_ds = a9_side[3*PSW +: 3*DSW];
@@ -293,20 +332,14 @@ module csgrt_shade #(
     // ---- A10: n_i ds_i -------------------------------------------------------
     localparam NDPW = NVW + DSW;   // 34
     wire [3*NDPW-1:0] nds;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_a10
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(NVW), .B_WIDTH(DSW)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a9_valid),
-                .a_i(a9_n[i*NVW +: NVW]), .b_i(a9_ds[i*DSW +: DSW]),
-                .valid_o(unused_v), .p_o(nds[i*NDPW +: NDPW]));
-        end
-    endgenerate
+    csgrt_mul_vec #(.A_WIDTH(NVW), .B_WIDTH(DSW), .N(3), .II(II)) u_mul_a10 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a),
+        .a_i(a9_n), .b_i(a9_ds), .p_o(nds));
     wire             a10_valid;
     wire [3*NVW-1:0] a10_n;
     wire [A4W-1:0]   a10_side;
     csgrt_delay #(.WIDTH(3 * NVW + A4W), .STAGES(2)) u_dly_a10 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a9_valid),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .valid_i(a9_valid),
         .data_i({a9_side, a9_n}), .valid_o(a10_valid), .data_o({a10_side, a10_n}));
 
     // ---- A11: face the ray, dn = rnd(ds.n, SF) --------------------------------
@@ -331,8 +364,8 @@ module csgrt_shade #(
     reg [A4W-1:0]   a11_side_q;
     always @(posedge clk_i) begin
         if (!rst_ni) a11_valid_q <= 1'b0;
-        else if (en_a) a11_valid_q <= a10_valid;
-        if (en_a) begin
+        else if (adv_a) a11_valid_q <= a10_valid;
+        if (adv_a) begin
             a11_n_q    <= nf_d;
             a11_dn_q   <= ndf_r[15 +: DNW];
             a11_side_q <= a10_side;
@@ -344,7 +377,7 @@ module csgrt_shade #(
     wire [3*NVW-1:0] a12_n;
     wire [A4W-1:0]   a12_side;
     csgrt_delay #(.WIDTH(3 * NVW + A4W), .STAGES(2)) u_dly_a12 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a11_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .valid_i(a11_valid_q),
         .data_i({a11_side_q, a11_n_q}), .valid_o(a12_valid), .data_o({a12_side, a12_n}));
     wire [3*PSW-1:0] a12_ps  = a12_side[0 +: 3*PSW];
     wire [3*DSW-1:0] a12_ds  = a12_side[3*PSW +: 3*DSW];
@@ -354,13 +387,9 @@ module csgrt_shade #(
         if (SPECULAR != 0) begin : g_a12
             localparam DNPW = DNW + NVW;   // 35
             wire [3*DNPW-1:0] dnn;
-            for (i = 0; i < 3; i = i + 1) begin : g_mul
-                wire unused_v;
-                csgrt_mul #(.A_WIDTH(DNW), .B_WIDTH(NVW)) u_mul (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .valid_i(a11_valid_q),
-                    .a_i(a11_dn_q), .b_i(a11_n_q[i*NVW +: NVW]),
-                    .valid_o(unused_v), .p_o(dnn[i*DNPW +: DNPW]));
-            end
+            csgrt_mul_vec #(.A_WIDTH(DNW), .B_WIDTH(NVW), .N(3), .II(II)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a),
+                .a_i({3{a11_dn_q}}), .b_i(a11_n_q), .p_o(dnn));
             for (i = 0; i < 3; i = i + 1) begin : g_a13
                 // rnd(2 x, 15) = rnd(x, 14)
                 wire [DNPW-1:0] pr = dnn[i*DNPW +: DNPW] + {{(DNPW-14){1'b0}}, 1'b1, 13'd0};
@@ -381,7 +410,7 @@ module csgrt_shade #(
     wire [SKAW-1:0]  ska_data;
     csgrt_skid #(.WIDTH(SKAW)) u_skid_a (
         .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(a12_valid), .ready_o(en_a), .data_i({a12_pix, r_d, a12_n, a12_ps}),
+        .valid_i(a12_valid && last_a), .ready_o(en_a), .data_i({a12_pix, r_d, a12_n, a12_ps}),
         .valid_o(ska_valid), .ready_i(ska_ready), .data_o(ska_data));
     wire [3*PSW-1:0] sq_ps  = ska_data[0 +: 3*PSW];
     wire [3*NVW-1:0] sq_n   = ska_data[3*PSW +: 3*NVW];
@@ -397,8 +426,8 @@ module csgrt_shade #(
     wire [NLW:0]    k_x     = {{(NLW+1-KW_L){1'b0}}, k_q};
     wire [NLW:0]    nl_x    = {1'b0, num_lights_i};
     wire            sq_last = !sq_use || (k_x + {{NLW{1'b0}}, 1'b1} >= nl_x);
-    wire            issue   = en_b && ska_valid;
-    assign ska_ready = en_b && sq_last;
+    wire            issue   = adv_b && ska_valid;
+    assign ska_ready = adv_b && sq_last;
     always @(posedge clk_i) begin
         if (!rst_ni) k_q <= {KW_L{1'b0}};
         else if (issue) k_q <= sq_last ? {KW_L{1'b0}} : k_q + {{(KW_L-1){1'b0}}, 1'b1};
@@ -450,8 +479,8 @@ module csgrt_shade #(
     reg [XBW-1:0]   b1_x_q;
     always @(posedge clk_i) begin
         if (!rst_ni) b1_valid_q <= 1'b0;
-        else if (en_b) b1_valid_q <= ska_valid;
-        if (en_b) begin
+        else if (adv_b) b1_valid_q <= ska_valid;
+        if (adv_b) begin
             b1_lv_q <= lv_d;
             b1_x_q  <= {sq_use, sq_last, (k_q == {KW_L{1'b0}}), sq_pix, sq_r, sq_n, lcol_d};
         end
@@ -461,8 +490,8 @@ module csgrt_shade #(
     wire             b7_valid;
     wire [3*NVW-1:0] b7_l;
     wire [XBW-1:0]   b7_x;
-    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(XBW)) u_unit_l (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b1_valid_q),
+    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(XBW), .II(II)) u_unit_l (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b), .valid_i(b1_valid_q),
         .v_i(b1_lv_q), .user_i(b1_x_q),
         .valid_o(b7_valid), .u_o(b7_l), .user_o(b7_x));
     wire [47:0]      b7_lcol = b7_x[0 +: 48];
@@ -476,24 +505,16 @@ module csgrt_shade #(
     localparam RLPW = RW + NVW;    // 35
     wire [3*NLPW-1:0] nl_p;
     wire [3*RLPW-1:0] rl_p;
+    csgrt_mul_vec #(.A_WIDTH(NVW), .B_WIDTH(NVW), .N(3), .II(II)) u_mul_b8n (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+        .a_i(b7_n), .b_i(b7_l), .p_o(nl_p));
     generate
-        for (i = 0; i < 3; i = i + 1) begin : g_b8
-            wire unused_vn;
-            csgrt_mul #(.A_WIDTH(NVW), .B_WIDTH(NVW)) u_mul_n (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
-                .a_i(b7_n[i*NVW +: NVW]), .b_i(b7_l[i*NVW +: NVW]),
-                .valid_o(unused_vn), .p_o(nl_p[i*NLPW +: NLPW]));
-            if (SPECULAR != 0) begin : g_r
-                wire unused_vr;
-                csgrt_mul #(.A_WIDTH(RW), .B_WIDTH(NVW)) u_mul_r (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
-                    .a_i(b7_r[i*RW +: RW]), .b_i(b7_l[i*NVW +: NVW]),
-                    .valid_o(unused_vr), .p_o(rl_p[i*RLPW +: RLPW]));
-            end else begin : g_no_r
-                assign rl_p[i*RLPW +: RLPW] = {RLPW{1'b0}};   // cos_r = 0: no highlight
-            end
-        end
-        if (SPECULAR == 0) begin : g_no_r_sink
+        if (SPECULAR != 0) begin : g_b8r
+            csgrt_mul_vec #(.A_WIDTH(RW), .B_WIDTH(NVW), .N(3), .II(II)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+                .a_i(b7_r), .b_i(b7_l), .p_o(rl_p));
+        end else begin : g_no_b8r
+            assign rl_p = {(3*RLPW){1'b0}};   // cos_r = 0: no highlight
             wire unused_r = ^b7_r;
         end
     endgenerate
@@ -501,7 +522,7 @@ module csgrt_shade #(
     wire           b8_valid;
     wire [X2W-1:0] b8_x;
     csgrt_delay #(.WIDTH(X2W), .STAGES(2)) u_dly_b8 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b7_valid),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(b7_valid),
         .data_i({b7_fl, b7_pix, b7_lcol}), .valid_o(b8_valid), .data_o(b8_x));
     wire [PIXW-1:0] b8_pix = b8_x[48 +: PIXW];
     wire unused_b8_pix = ^{b8_pix[PIXW-1:PX_PH+16], b8_pix[PX_PH-1:0]};
@@ -526,8 +547,8 @@ module csgrt_shade #(
     reg [X2W-1:0]  b9_x_q;
     always @(posedge clk_i) begin
         if (!rst_ni) b9_valid_q <= 1'b0;
-        else if (en_b) b9_valid_q <= b8_valid;
-        if (en_b) begin
+        else if (adv_b) b9_valid_q <= b8_valid;
+        if (adv_b) begin
             b9_ndl_q <= ndl_full[NDW-1:0];
             b9_cr_q  <= cr_full[NDW-1:0];
             b9_den_q <= b8_use && ndl_pos;
@@ -562,34 +583,43 @@ module csgrt_shade #(
                 wire [PSDW-1:0] side_dly;
                 wire [NDW-1:0]  base_dly;
                 csgrt_delay #(.WIDTH(PSDW + 2 * NDW), .STAGES(2)) u_dly (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(pw_valid[i]),
                     .data_i({pw_side[i*PSDW +: PSDW], base_in, res_in}), .valid_o(pw_valid[i+1]),
                     .data_o({side_dly, base_dly, res_dly}));
                 wire [PIXW-1:0] pix = side_dly[48 +: PIXW];
                 wire            bit_k = pix[PX_PHS + i];
-                // result: stage 0 multiplies by 1.0, which is exact: res = base
+                // the stage's products, {base^2, res base}, on one
+                // csgrt_mul_vec: stage 0 multiplies the result by 1.0, which
+                // is exact (res = base), and the square after the last
+                // exponent bit is never used
+                localparam integer NPR = (i == 0 || i == NPOW - 1) ? 1 : 2;
+                wire [NPR*NDW-1:0] pa, pb;
+                wire [NPR*PPW-1:0] pp;   // {base^2, res base}, or the one of them
+                if (i == 0) begin : g_ops_b
+                    assign pa = base_in;
+                    assign pb = base_in;
+                end else if (i == NPOW - 1) begin : g_ops_r
+                    assign pa = res_in;
+                    assign pb = base_in;
+                end else begin : g_ops_rb
+                    assign pa = {base_in, res_in};
+                    assign pb = {base_in, base_in};
+                end
+                csgrt_mul_vec #(.A_WIDTH(NDW), .B_WIDTH(NDW), .N(NPR), .II(II)) u_mul (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+                    .a_i(pa), .b_i(pb), .p_o(pp));
                 if (i == 0) begin : g_first
                     assign pw_res[(i+1)*NDW +: NDW] = bit_k ? base_dly : res_dly;
-                end else begin : g_mul_res
-                    wire [PPW-1:0] pr;
-                    wire           unused_v;
-                    csgrt_mul #(.A_WIDTH(NDW), .B_WIDTH(NDW)) u_mul_r (
-                        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
-                        .a_i(res_in), .b_i(base_in), .valid_o(unused_v), .p_o(pr));
-                    wire [PPW-1:0] prr = pr + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
+                    wire unused_res = ^res_in;
+                end else begin : g_res
+                    wire [PPW-1:0] prr = pp[0 +: PPW] + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
                     wire unused_prr = ^{prr[14:0], prr[PPW-1:15+NDW]};
                     assign pw_res[(i+1)*NDW +: NDW] = bit_k ? prr[15 +: NDW] : res_dly;
                 end
-                // base: the square after the last exponent bit is never used
                 if (i == NPOW - 1) begin : g_last
                     assign pw_base[(i+1)*NDW +: NDW] = base_dly;
-                end else begin : g_mul_base
-                    wire [PPW-1:0] pb;
-                    wire           unused_v;
-                    csgrt_mul #(.A_WIDTH(NDW), .B_WIDTH(NDW)) u_mul_b (
-                        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(pw_valid[i]),
-                        .a_i(base_in), .b_i(base_in), .valid_o(unused_v), .p_o(pb));
-                    wire [PPW-1:0] pbr = pb + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
+                end else begin : g_base
+                    wire [PPW-1:0] pbr = pp[(NPR-1)*PPW +: PPW] + {{(PPW-15){1'b0}}, 1'b1, 14'd0};
                     wire unused_pbr = ^{pbr[14:0], pbr[PPW-1:15+NDW]};
                     assign pw_base[(i+1)*NDW +: NDW] = pbr[15 +: NDW];
                 end
@@ -608,12 +638,11 @@ module csgrt_shade #(
             // ---- B11: ph = rnd(phong pw, SF) ----------------------------------------------
             localparam PHPW = 17 + NDW;   // 35
             wire [PHPW-1:0] php;
-            wire            unused_vph;
-            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_ph (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b10_valid),
-                .a_i({1'b0, b10_pix[PX_PH +: 16]}), .b_i(b10_pw), .valid_o(unused_vph), .p_o(php));
+            csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(NDW), .N(1), .II(II)) u_mul_ph (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+                .a_i({1'b0, b10_pix[PX_PH +: 16]}), .b_i(b10_pw), .p_o(php));
             csgrt_delay #(.WIDTH(PSDW), .STAGES(2)) u_dly_b11 (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b10_valid),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(b10_valid),
                 .data_i(b10_side), .valid_o(b11_valid), .data_o(b11_side));
             wire [PHPW-1:0] phr = php + {{(PHPW-15){1'b0}}, 1'b1, 14'd0};
             wire unused_phr = ^{phr[14:0], phr[PHPW-1:15+NDW]};
@@ -631,30 +660,28 @@ module csgrt_shade #(
     // ---- B12: light_c ph, light_c ndl ---------------------------------------------
     localparam LPW = 17 + NDW;   // 35
     wire [3*LPW-1:0] lsp, ldp;
+    wire [3*17-1:0]  b11_lc17;   // the light colour, channels as 17-bit signed
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_b12
-            wire unused_vd;
-            if (SPECULAR != 0) begin : g_s
-                wire unused_vs;
-                csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_s (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
-                    .a_i({1'b0, b11_lcol[i*16 +: 16]}), .b_i(b11_ph), .valid_o(unused_vs), .p_o(lsp[i*LPW +: LPW]));
-            end else begin : g_no_s
-                assign lsp[i*LPW +: LPW] = {LPW{1'b0}};
-            end
-            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(NDW)) u_mul_d (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
-                .a_i({1'b0, b11_lcol[i*16 +: 16]}), .b_i(b11_ndl), .valid_o(unused_vd), .p_o(ldp[i*LPW +: LPW]));
+            assign b11_lc17[i*17 +: 17] = {1'b0, b11_lcol[i*16 +: 16]};
         end
-        if (SPECULAR == 0) begin : g_no_s_sink
+        if (SPECULAR != 0) begin : g_b12s
+            csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(NDW), .N(3), .II(II)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+                .a_i(b11_lc17), .b_i({3{b11_ph}}), .p_o(lsp));
+        end else begin : g_no_b12s
+            assign lsp = {(3*LPW){1'b0}};
             wire unused_ph = ^b11_ph;
         end
     endgenerate
+    csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(NDW), .N(3), .II(II)) u_mul_b12d (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+        .a_i(b11_lc17), .b_i({3{b11_ndl}}), .p_o(ldp));
     localparam X3W = 2 + PIXW + 3;   // {enables, flags, pix}
     wire           b12_valid;
     wire [X3W-1:0] b12_x;
     csgrt_delay #(.WIDTH(X3W), .STAGES(2)) u_dly_b12 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(b11_valid),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(b11_valid),
         .data_i({b11_side[PSDW-1 -: 2], b11_side[48 +: PIXW + 3]}), .valid_o(b12_valid), .data_o(b12_x));
     wire [PIXW-1:0] b12_pix   = b12_x[0 +: PIXW];
     wire            b12_first = b12_x[PIXW];
@@ -686,12 +713,12 @@ module csgrt_shade #(
     reg [PIXW-1:0]   c0_pix_q;
     always @(posedge clk_i) begin
         if (!rst_ni) c0_valid_q <= 1'b0;
-        else if (en_b) c0_valid_q <= b12_valid && b12_last;
-        if (en_b && b12_valid) begin
+        else if (adv_b) c0_valid_q <= b12_valid && b12_last;
+        if (adv_b && b12_valid) begin
             dacc_q <= dsum;
             sacc_q <= ssum;
         end
-        if (en_b) c0_pix_q <= b12_pix;
+        if (adv_b) c0_pix_q <= b12_pix;
     end
 
     // =========================================================================
@@ -700,20 +727,14 @@ module csgrt_shade #(
     // ---- C1: diffuse diff_c --------------------------------------------------------
     localparam DDPW = 17 + DAW;
     wire [3*DDPW-1:0] ddp;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_c1
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(DAW)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(c0_valid_q),
-                .a_i({1'b0, c0_pix_q[PX_DIF +: 16]}), .b_i(dacc_q[i*DAW +: DAW]),
-                .valid_o(unused_v), .p_o(ddp[i*DDPW +: DDPW]));
-        end
-    endgenerate
+    csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(DAW), .N(3), .II(II)) u_mul_c1 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+        .a_i({3{1'b0, c0_pix_q[PX_DIF +: 16]}}), .b_i(dacc_q), .p_o(ddp));
     wire             c1_valid;
     wire [PIXW-1:0]  c1_pix;
     wire [3*SAW-1:0] c1_spec;
     csgrt_delay #(.WIDTH(PIXW + 3 * SAW), .STAGES(2)) u_dly_c1 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(c0_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(c0_valid_q),
         .data_i({sacc_q, c0_pix_q}), .valid_o(c1_valid), .data_o({c1_spec, c1_pix}));
 
     // ---- C2: intensity = ambient + rnd(diffuse diff_c, CF) -----------------------------
@@ -731,8 +752,8 @@ module csgrt_shade #(
     reg [3*SAW-1:0]  c2_spec_q;
     always @(posedge clk_i) begin
         if (!rst_ni) c2_valid_q <= 1'b0;
-        else if (en_b) c2_valid_q <= c1_valid;
-        if (en_b) begin
+        else if (adv_b) c2_valid_q <= c1_valid;
+        if (adv_b) begin
             c2_int_q  <= int_d;
             c2_pix_q  <= c1_pix;
             c2_spec_q <= c1_spec;
@@ -742,20 +763,20 @@ module csgrt_shade #(
     // ---- C3: pigment_c intensity_c -----------------------------------------------------
     localparam CPW = 17 + IW;
     wire [3*CPW-1:0] cp;
+    wire [3*17-1:0]  c2_rgb17;   // the pigment, channels as 17-bit signed
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_c3
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(17), .B_WIDTH(IW)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(c2_valid_q),
-                .a_i({1'b0, c2_pix_q[PX_RGB + i*16 +: 16]}), .b_i(c2_int_q[i*IW +: IW]),
-                .valid_o(unused_v), .p_o(cp[i*CPW +: CPW]));
+            assign c2_rgb17[i*17 +: 17] = {1'b0, c2_pix_q[PX_RGB + i*16 +: 16]};
         end
     endgenerate
+    csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(IW), .N(3), .II(II)) u_mul_c3 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+        .a_i(c2_rgb17), .b_i(c2_int_q), .p_o(cp));
     wire             c3_valid;
     wire [PIXW-1:0]  c3_pix;
     wire [3*SAW-1:0] c3_spec;
     csgrt_delay #(.WIDTH(PIXW + 3 * SAW), .STAGES(2)) u_dly_c3 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .valid_i(c2_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(c2_valid_q),
         .data_i({c2_spec_q, c2_pix_q}), .valid_o(c3_valid), .data_o({c3_spec, c3_pix}));
 
     // ---- C4: colour, background for a miss, clamp to [0, 4095] ---------------------------
@@ -783,8 +804,8 @@ module csgrt_shade #(
             reg [3*SAW-1:0]   c4_spec_q;
             always @(posedge clk_i) begin
                 if (!rst_ni) c4_valid_q <= 1'b0;
-                else if (en_b) c4_valid_q <= c3_valid;
-                if (en_b) begin
+                else if (adv_b) c4_valid_q <= c3_valid;
+                if (adv_b) begin
                     c4_col_q  <= col_lin;
                     c4_spec_q <= c3_spec;
                     c4_xy_q   <= c3_pix[0 +: 24];
@@ -793,7 +814,7 @@ module csgrt_shade #(
             wire unused_idx = ^idx_d;
             csgrt_skid #(.WIDTH(24 + 3 * CLW + 3 * SAW)) u_skid_out (
                 .clk_i(clk_i), .rst_ni(rst_ni),
-                .valid_i(c4_valid_q), .ready_o(en_b), .data_i({c4_spec_q, c4_col_q, c4_xy_q}),
+                .valid_i(c4_valid_q && last_b), .ready_o(en_b), .data_i({c4_spec_q, c4_col_q, c4_xy_q}),
                 .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_spec_o, m_local_o, m_y_o, m_x_o}));
             assign {m_r_o, m_g_o, m_b_o} = 24'd0;
         end else begin : g_srgb
@@ -802,8 +823,8 @@ module csgrt_shade #(
         reg [35:0]     c4_idx_q;
         always @(posedge clk_i) begin
             if (!rst_ni) c4_valid_q <= 1'b0;
-            else if (en_b) c4_valid_q <= c3_valid;
-            if (en_b) begin
+            else if (adv_b) c4_valid_q <= c3_valid;
+            if (adv_b) begin
                 c4_idx_q <= idx_d;
                 c4_xy_q  <= c3_pix[0 +: 24];
             end
@@ -816,18 +837,18 @@ module csgrt_shade #(
         reg [23:0]  c5_xy_q;
         for (i = 0; i < 3; i = i + 1) begin : g_c5
             csgrt_srgb #(.LUT_FILE(LUT_FILE)) u_lut (
-                .clk_i(clk_i), .ce_i(en_b), .idx_i(c4_idx_q[i*12 +: 12]), .code_o(code[i*8 +: 8]));
+                .clk_i(clk_i), .ce_i(adv_b), .idx_i(c4_idx_q[i*12 +: 12]), .code_o(code[i*8 +: 8]));
         end
         always @(posedge clk_i) begin
             if (!rst_ni) c5_valid_q <= 1'b0;
-            else if (en_b) c5_valid_q <= c4_valid_q;
-            if (en_b) c5_xy_q <= c4_xy_q;
+            else if (adv_b) c5_valid_q <= c4_valid_q;
+            if (adv_b) c5_xy_q <= c4_xy_q;
         end
 
         // ---- output skid --------------------------------------------------------------------
         csgrt_skid #(.WIDTH(48)) u_skid_out (
             .clk_i(clk_i), .rst_ni(rst_ni),
-            .valid_i(c5_valid_q), .ready_o(en_b), .data_i({code, c5_xy_q}),
+            .valid_i(c5_valid_q && last_b), .ready_o(en_b), .data_i({code, c5_xy_q}),
             .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_b_o, m_g_o, m_r_o, m_y_o, m_x_o}));
         assign m_local_o = {3*CLW{1'b0}};
         assign m_spec_o  = {3*SAW{1'b0}};

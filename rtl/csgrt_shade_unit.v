@@ -7,15 +7,18 @@
 // A thin wrapper of csgrt_unit (FRAC 15, SQRT_STAGES 17), which has the
 // pipeline: M (2) squares, S (1) sum, Q (17) square root, P (1) L = root + 1,
 // D (17) divisions, O (1) signed output.
-// Latency: 39 clocks, counted in enabled clocks. Handshake: none (the
-// enclosing pipeline's global stall ce_i). Multipliers: 3.
+// Latency: 39 clocks, counted in enabled clocks (II = 3: 39 beats of
+// three clocks, the squares on one multiplier). Handshake: none (the
+// enclosing pipeline's global stall ce_i). Multipliers: 3 (II = 3: 1).
 module csgrt_shade_unit #(
     parameter VW         = 18,   // signed width of v_i (<= 18 keeps 18x18 multipliers)
-    parameter USER_WIDTH = 1     // sideband carried alongside (>= 1)
+    parameter USER_WIDTH = 1,    // sideband carried alongside (>= 1)
+    parameter II         = 1     // running clocks per beat: 1 or 3 (csgrt_unit)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_ni,   // synchronous, active low (valid bits only)
-    input  wire                  ce_i,     // stage enable (low = stall)
+    input  wire                  ce_i,     // the pipeline runs (low = stall)
+    input  wire [1:0]            phase_i,  // csgrt_beat's phase (II = 3)
     input  wire                  valid_i,
     input  wire [3*VW-1:0]       v_i,      // x, y, z (x low), any common fraction
     input  wire [USER_WIDTH-1:0] user_i,
@@ -28,8 +31,8 @@ module csgrt_shade_unit #(
     // synthesis removes its registers
     wire [16:0] unused_root;
 
-    csgrt_unit #(.VW(VW), .FRAC(15), .SQRT_STAGES(17), .USER_WIDTH(USER_WIDTH)) u_unit (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
+    csgrt_unit #(.VW(VW), .FRAC(15), .SQRT_STAGES(17), .USER_WIDTH(USER_WIDTH), .II(II)) u_unit (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .phase_i(phase_i), .valid_i(valid_i),
         .v_i(v_i), .user_i(user_i),
         .valid_o(valid_o), .u_o(u_o), .root_o(unused_root), .user_o(user_o));
 

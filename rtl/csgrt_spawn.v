@@ -1071,7 +1071,7 @@ module csgrt_spawn #(
     wire [SQ-1:0]    u2_root;
     wire [U2UW-1:0]  u2_user;
     csgrt_unit #(.VW(VW2), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(U2UW)) u_unit_c (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c3_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_i(2'd0), .valid_i(c3_valid_q),
         .v_i(c3_v_q), .user_i({c3_lit_q, c3_last_q, c3_light_q, c3_kind_q}),
         .valid_o(u2_valid), .u_o(u2_u), .root_o(u2_root), .user_o(u2_user));
     wire [2:0]    o_kind  = u2_user[0 +: 3];

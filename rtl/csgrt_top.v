@@ -43,6 +43,7 @@ module csgrt_top #(
     parameter CONTEXTS      = 8,     // pixels in flight in the ray tree
     parameter MAX_DEPTH     = 8,     // ray tree depth the stack holds (>= max_trace_level)
     parameter SORT_INSERTS  = 1,     // events each lane's sorter inserts per clock: 1, or 2 (more logic, 0-3 % fewer cycles)
+    parameter SHADE_II      = 3,     // clocks per item of the shading and the ray tree's arithmetic: 3 (a third of the multipliers, < 1 % more cycles), or 1
     // derived
     parameter LEAF_BITS     = $clog2(MAX_LEAVES),
     parameter SLOTS         = 1 << TREE_HEIGHT
@@ -431,7 +432,8 @@ module csgrt_top #(
             wire unused_eff = ^{hit_entering, l_to_q, l_near_q, l_after_q, l_run_q, mat[MAT_W-1:96], max_trace,
                                 l_from_q, ior_a, ior_b, mat_clear, leaf_c_coef,
                                 light_shadowless};   // every light is unshadowed here
-            csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE), .SPECULAR(SPECULAR)) u_shade (
+            csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE), .SPECULAR(SPECULAR),
+                          .II(SHADE_II)) u_shade (
                 .clk_i, .rst_ni,
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
                 .light_color_i (light_col), .background_i (background),
@@ -495,7 +497,7 @@ module csgrt_top #(
                 .BITS(BITS), .TREE_HEIGHT(TREE_HEIGHT), .MAX_LIGHTS(MAX_LIGHTS), .CONTEXTS(CONTEXTS),
                 .MAX_DEPTH(MAX_DEPTH), .LOOK_BEHIND(LOOK_BEHIND), .SHADOWS(SHADOWS), .REFLECTION(REFLECTION),
                 .REFRACTION(REFRACTION),
-                .DIST_W(DIST_W), .MAT_W(MAT_W), .COL_W(31), .SPEC_W(26), .LUT_FILE(LUT_FILE)
+                .DIST_W(DIST_W), .MAT_W(MAT_W), .COL_W(31), .SPEC_W(26), .LUT_FILE(LUT_FILE), .II(SHADE_II)
             ) u_raytree (
                 .clk_i, .rst_ni, .start_i (start),
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_color_i (light_col),
@@ -538,7 +540,7 @@ module csgrt_top #(
             wire unused_ch = ^{ch_in_range, sr_y, hit_entering, l_mat_q, cam_last};
 
             csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE),
-                          .LINEAR_OUT(1), .EXT_LIGHT(1), .SPECULAR(SPECULAR)) u_shade (
+                          .LINEAR_OUT(1), .EXT_LIGHT(1), .SPECULAR(SPECULAR), .II(SHADE_II)) u_shade (
                 .clk_i, .rst_ni,
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
                 .light_color_i (light_col), .background_i (background),

@@ -19,17 +19,23 @@
 // (unit_fx(., 15, 17): 39; unit_fx(., F, F+8) of the geometry: 2F+15).
 // Throughput: one vector per clock. Handshake: none (the enclosing
 // pipeline's global stall ce_i). Multipliers: 3 (VW x VW).
+// II = 3 (a time-shared pipeline, csgrt_beat): every register moves on the
+// beat's advance (ce_i at phase_i 2), so the latency is counted in beats
+// and the throughput is a vector per beat; the three squares share one
+// multiplier (csgrt_mul_vec). Multipliers: 1.
 // Users: csgrt_shade_unit (shading, FRAC 15, 17 stages), csgrt_spawn
 // (normals and secondary-ray directions, FRAC F, F+8 stages).
 module csgrt_unit #(
     parameter VW          = 18,   // signed width of v_i (>= 2)
     parameter FRAC        = 15,   // fraction bits of u (>= 1)
     parameter SQRT_STAGES = 17,   // square-root stages: sum v^2 < 4^SQRT_STAGES (>= 2)
-    parameter USER_WIDTH  = 1     // sideband carried alongside (>= 1)
+    parameter USER_WIDTH  = 1,    // sideband carried alongside (>= 1)
+    parameter II          = 1     // running clocks per beat: 1, or 3 (csgrt_mul_vec)
 ) (
     input  wire                    clk_i,
     input  wire                    rst_ni,   // synchronous, active low (valid bits only)
-    input  wire                    ce_i,     // stage enable (low = stall)
+    input  wire                    ce_i,     // the pipeline runs (low = stall)
+    input  wire [1:0]              phase_i,  // csgrt_beat's phase (II = 3; 0 for II = 1)
     input  wire                    valid_i,
     input  wire [3*VW-1:0]         v_i,      // x, y, z (x low), two's complement
     input  wire [USER_WIDTH-1:0]   user_i,
@@ -52,20 +58,18 @@ module csgrt_unit #(
 
     genvar i;
 
+    // every register but the shared multiplier's moves on the beat's advance
+    wire adv = ce_i && (II == 1 || phase_i == 2'd2);
+
     // ---- M: squares -----------------------------------------------------------
     wire [3*PW-1:0] sq;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_sq
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(VW), .B_WIDTH(VW)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
-                .a_i(v_i[i*VW +: VW]), .b_i(v_i[i*VW +: VW]), .valid_o(unused_v), .p_o(sq[i*PW +: PW]));
-        end
-    endgenerate
+    csgrt_mul_vec #(.A_WIDTH(VW), .B_WIDTH(VW), .N(3), .II(II)) u_sq (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .phase_i(phase_i),
+        .a_i(v_i), .b_i(v_i), .p_o(sq));
     wire          m_valid;
     wire [MW-1:0] m_side;
     csgrt_delay #(.WIDTH(MW), .STAGES(2)) u_dly_m (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(valid_i),
         .data_i({user_i, v_i}), .valid_o(m_valid), .data_o(m_side));
 
     // ---- S: sum (< 4^SQ by the caller's bound) ----------------------------------
@@ -77,8 +81,8 @@ module csgrt_unit #(
     reg [MW-1:0]   s_side_q;
     always @(posedge clk_i) begin
         if (!rst_ni) s_valid_q <= 1'b0;
-        else if (ce_i) s_valid_q <= m_valid;
-        if (ce_i) begin
+        else if (adv) s_valid_q <= m_valid;
+        if (adv) begin
             s_n_q    <= sum[2*SQ-1:0];
             s_side_q <= m_side;
         end
@@ -95,7 +99,7 @@ module csgrt_unit #(
     wire [SQ-1:0] q_root;
     wire [MW-1:0] q_side;
     csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(MW)) u_sqrt (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(s_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(s_valid_q),
         .n_i(s_n_q), .user_i(s_side_q), .valid_o(q_valid), .root_o(q_root), .user_o(q_side));
 
     // ---- P: L = root + 1, numerators ------------------------------------------------------
@@ -105,8 +109,8 @@ module csgrt_unit #(
     reg [DUW-1:0]    p_user_q;
     always @(posedge clk_i) begin
         if (!rst_ni) p_valid_q <= 1'b0;
-        else if (ce_i) p_valid_q <= q_valid;
-        if (ce_i) begin
+        else if (adv) p_valid_q <= q_valid;
+        if (adv) begin
             p_len_q  <= {2'b00, q_root} + {{(DENW-1){1'b0}}, 1'b1};
             p_num_q  <= {q_side[2*VW +: VW], {FRAC{1'b0}}, q_side[VW +: VW], {FRAC{1'b0}},
                          q_side[0 +: VW], {FRAC{1'b0}}};
@@ -123,14 +127,14 @@ module csgrt_unit #(
         for (i = 0; i < 3; i = i + 1) begin : g_div
             if (i == 0) begin : g_main
                 csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(DUW)) u_div (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(p_valid_q),
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p_valid_q),
                     .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(p_user_q),
                     .valid_o(d_valid), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
                     .user_o(d_user));
             end else begin : g_other
                 wire unused_v, unused_u;
                 csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(p_valid_q),
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p_valid_q),
                     .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(1'b0),
                     .valid_o(unused_v), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
                     .user_o(unused_u));
@@ -147,8 +151,8 @@ module csgrt_unit #(
     integer k;
     always @(posedge clk_i) begin
         if (!rst_ni) o_valid_q <= 1'b0;
-        else if (ce_i) o_valid_q <= d_valid;
-        if (ce_i) begin
+        else if (adv) o_valid_q <= d_valid;
+        if (adv) begin
             for (k = 0; k < 3; k = k + 1)
                 o_u_q[k*UOW +: UOW] <= d_neg[k] ? {UOW{1'b0}} - {1'b0, d_mag[k*QB +: QB]}
                                                 : {1'b0, d_mag[k*QB +: QB]};
@@ -161,9 +165,9 @@ module csgrt_unit #(
     assign root_o  = o_user_q[UW +: SQ];
 
     generate
-        if (VW < 2 || FRAC < 1 || SQRT_STAGES < 2 || USER_WIDTH < 1) begin : g_bad_param
+        if (VW < 2 || FRAC < 1 || SQRT_STAGES < 2 || USER_WIDTH < 1 || (II != 1 && II != 3)) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_unit needs VW >= 2, FRAC >= 1, SQRT_STAGES >= 2, USER_WIDTH >= 1");
+                $display("ERROR %m: csgrt_unit needs VW >= 2, FRAC >= 1, SQRT_STAGES >= 2, USER_WIDTH >= 1, II = 1 or 3");
                 $finish;
             end
         end

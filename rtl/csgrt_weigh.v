@@ -8,16 +8,20 @@
 // Latency: 2 clocks (csgrt_mul's input and output registers), counted in
 // enabled clocks; the rounding adder follows the output register. A user
 // word travels alongside. Handshake: none (ce_i is the enclosing
-// pipeline's stall). Multipliers: 3.
+// pipeline's stall). Multipliers: 3; II = 3 (a time-shared pipeline,
+// csgrt_beat): 1 serving the three channels in turn (csgrt_mul_vec), the
+// latency 2 beats, the user word moving on the beat's advance.
 module csgrt_weigh #(
     parameter A_WIDTH    = 16,   // unsigned operand a
     parameter B_WIDTH    = 16,   // unsigned operand b
     parameter USER_WIDTH = 1,
-    parameter P_WIDTH    = A_WIDTH + B_WIDTH - 11
+    parameter P_WIDTH    = A_WIDTH + B_WIDTH - 11,
+    parameter II         = 1      // running clocks per beat: 1 or 3
 ) (
     input  wire                    clk_i,
     input  wire                    rst_ni,   // synchronous, active low (valid bits only)
-    input  wire                    ce_i,
+    input  wire                    ce_i,     // the pipeline runs (low = stall)
+    input  wire [1:0]              phase_i,  // csgrt_beat's phase (II = 3; 0 for II = 1)
     input  wire                    valid_i,
     input  wire [3*A_WIDTH-1:0]    a_i,      // channel c at c*A_WIDTH
     input  wire [3*B_WIDTH-1:0]    b_i,
@@ -28,15 +32,20 @@ module csgrt_weigh #(
 );
     localparam MW = A_WIDTH + B_WIDTH + 2;   // signed product of the zero-extended operands
 
+    // the operands zero-extended: signed and non-negative
+    wire [3*(A_WIDTH+1)-1:0] a_x;
+    wire [3*(B_WIDTH+1)-1:0] b_x;
+    wire [3*MW-1:0]          prods;
+    csgrt_mul_vec #(.A_WIDTH(A_WIDTH + 1), .B_WIDTH(B_WIDTH + 1), .N(3), .II(II)) u_mul (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .phase_i(phase_i), .a_i(a_x), .b_i(b_x), .p_o(prods));
+    wire adv = ce_i && (II == 1 || phase_i == 2'd2);   // the beat's advance
+
     genvar c;
     generate
         for (c = 0; c < 3; c = c + 1) begin : g_ch
-            wire          unused_v;
-            wire [MW-1:0] prod;
-            csgrt_mul #(.A_WIDTH(A_WIDTH + 1), .B_WIDTH(B_WIDTH + 1)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
-                .a_i({1'b0, a_i[c*A_WIDTH +: A_WIDTH]}), .b_i({1'b0, b_i[c*B_WIDTH +: B_WIDTH]}),
-                .valid_o(unused_v), .p_o(prod));
+            assign a_x[c*(A_WIDTH+1) +: A_WIDTH+1] = {1'b0, a_i[c*A_WIDTH +: A_WIDTH]};
+            assign b_x[c*(B_WIDTH+1) +: B_WIDTH+1] = {1'b0, b_i[c*B_WIDTH +: B_WIDTH]};
+            wire [MW-1:0] prod = prods[c*MW +: MW];
             // the product is non-negative and below 2^(A+B): the top two bits are 0
             wire [MW-1:0] rounded = prod + {{(MW-12){1'b0}}, 1'b1, 11'd0};
             wire unused_bits = ^{rounded[11:0], rounded[MW-1:12+P_WIDTH]};
@@ -45,7 +54,7 @@ module csgrt_weigh #(
     endgenerate
 
     csgrt_delay #(.WIDTH(USER_WIDTH), .STAGES(2)) u_dly (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(valid_i),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(valid_i),
         .data_i(user_i), .valid_o(valid_o), .data_o(user_o));
 
     initial begin

@@ -13,7 +13,7 @@ BUILD        ?= build
 VERILATOR    ?= verilator
 YOSYS        ?= yosys
 TB_NAMES     := sqrt div isect camera shade
-TB_NAMES     += class_node class_tree walk spawn quadric_at mul
+TB_NAMES     += class_node class_tree walk spawn quadric_at mul mul_vec
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 # the multiplier bench once more as the FPGA build maps csgrt_mul (MULT18X18D tiles)
 TB_BINS      += $(BUILD)/tb/mul_ecp5
@@ -95,7 +95,8 @@ lint-rtl:
 	echo "verilator lint csgrt_top NUM_UNITS=2 SHADOWS=1 REFLECTION=1"; \
 	$(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GNUM_UNITS=2 -GSHADOWS=1 -GREFLECTION=1 rtl/csgrt_top.v; \
 	for fx in "-GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1" "-GSHADOWS=1 -GREFLECTION=1" "-GSHADOWS=1" "-GREFLECTION=1" "-GREFRACTION=1" \
-	          "-GSPECULAR=0" "-GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1 -GSPECULAR=0"; do for b in $(LINT_TOP_BITS); do \
+	          "-GSPECULAR=0" "-GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1 -GSPECULAR=0" \
+	          "-GSHADE_II=1" "-GSHADE_II=1 -GSPECULAR=0" "-GSHADE_II=1 -GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1"; do for b in $(LINT_TOP_BITS); do \
 	    echo "verilator lint csgrt_top BITS=$$b $$fx"; \
 	    $(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GBITS=$$b $$fx rtl/csgrt_top.v; \
 	done; done; \

@@ -8,7 +8,8 @@
 // shown material (border.to, or border.from when it is air); misses included.
 // Random input gaps and output back-pressure. Variants of the default scene
 // with no lights and with 8 lights check the light sequencer; a back-to-back
-// run measures the throughput (clocks per pixel) and the latency.
+// run measures the throughput (clocks per pixel) and the latency. The BITS 16
+// and 32 instances are time-shared (II = 3, tb_shade.v), 12 and 24 not.
 #include "Vtb_shade.h"
 #include "compile.h"
 #include "parse.h"
@@ -255,25 +256,31 @@ TEST(Shade, LightCounts) {
     check<24>(many, "default, 8 lights", 0.25, 0.25, 43);
 }
 
-// Back to back: clocks per pixel = max(1, lights) for hits, 1 for misses.
-TEST(Shade, ThroughputAndLatency) {
+// Back to back: clocks per pixel = II max(1, lights) for hits, II for misses
+// (II = 1 at BITS 24, 3 at BITS 16).
+template <int NB>
+void throughput(size_t ii) {
     chdir_root();
     for (size_t nl : {size_t(0), size_t(1), size_t(3)}) {
-        csgrt::CompiledScene cs = compile("default", 24, 64, 48);
+        csgrt::CompiledScene cs = compile("default", NB, 64, 48);
         while (cs.lights.size() > nl) cs.lights.pop_back();
         while (cs.lights.size() < nl) cs.lights.push_back(cs.lights.empty() ? csgrt::LightInfo{} : cs.lights[0]);
         const std::vector<Pixel> px = pixels(cs);
         size_t items = 0;
         for (const Pixel& p : px) items += (p.hit && nl > 0) ? nl : 1;
-        const tb::StreamResult r = run<24>(cs, px, 0.0, 0.0, 7);
+        const tb::StreamResult r = run<NB>(cs, px, 0.0, 0.0, 7);
         EXPECT_TRUE(r.ok()) << r.summary();
-        std::printf("shade throughput, %zu lights: %zu pixels, %zu light items, %llu cycles (%.3f clocks/item), "
-                    "latency %d..%d\n",
-                    nl, px.size(), items, (unsigned long long)r.cycles, double(r.cycles - 200) / double(items),
-                    r.min_latency, r.max_latency);
-        // every light item takes one clock; the pipeline fill and 200 drain clocks on top
-        EXPECT_LE(r.cycles, items + size_t(r.max_latency) + 210);
+        std::printf("shade throughput, BITS %d, II %zu, %zu lights: %zu pixels, %zu light items, %llu cycles "
+                    "(%.3f clocks/item), latency %d..%d\n",
+                    NB, ii, nl, px.size(), items, (unsigned long long)r.cycles,
+                    double(r.cycles - 200) / double(items), r.min_latency, r.max_latency);
+        // every light item takes II clocks; the pipeline fill and 200 drain clocks on top
+        EXPECT_LE(r.cycles, ii * items + size_t(r.max_latency) + 210);
+        // and no fewer: the time-shared build cannot take an item sooner
+        EXPECT_GE(r.cycles, ii * items);
     }
 }
+TEST(Shade, ThroughputAndLatency) { throughput<24>(1); }
+TEST(Shade, ThroughputAndLatencyShared) { throughput<16>(3); }
 
 }  // namespace

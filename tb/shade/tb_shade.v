@@ -1,7 +1,9 @@
 `default_nettype none
 // tb_shade — Verilator top for tb_shade.cpp: csgrt_shade (MAX_LIGHTS 8) at
 // BITS 12, 16, 24 and 32, one clock each so that only the instance under
-// test is evaluated.
+// test is evaluated. BITS 16 and 32 are time-shared (II = 3: a pixel or light
+// item every third clock, a third of the multipliers), 12 and 24 are not
+// (tb_shade.cpp's kShadeII says the same).
 module tb_shade (
     input  wire              b12_clk_i,
     input  wire              b12_rst_ni,
@@ -129,7 +131,7 @@ module tb_shade (
         /* verilator lint_on PINCONNECTEMPTY */
         .lc_color_i(48'd0));
 
-    csgrt_shade #(.BITS(16), .MAX_LIGHTS(8)) u_b16 (
+    csgrt_shade #(.BITS(16), .MAX_LIGHTS(8), .II(3)) u_b16 (
         .clk_i(b16_clk_i), .rst_ni(b16_rst_ni),
         .num_lights_i(b16_num_lights_i), .light_pos_i(b16_light_pos_i), .light_color_i(b16_light_color_i),
         .background_i(b16_background_i),
@@ -161,7 +163,7 @@ module tb_shade (
         /* verilator lint_on PINCONNECTEMPTY */
         .lc_color_i(48'd0));
 
-    csgrt_shade #(.BITS(32), .MAX_LIGHTS(8)) u_b32 (
+    csgrt_shade #(.BITS(32), .MAX_LIGHTS(8), .II(3)) u_b32 (
         .clk_i(b32_clk_i), .rst_ni(b32_rst_ni),
         .num_lights_i(b32_num_lights_i), .light_pos_i(b32_light_pos_i), .light_color_i(b32_light_color_i),
         .background_i(b32_background_i),

@@ -1,0 +1,108 @@
+`default_nettype none
+// csgrt_mul_vec — N signed products p_k = a_k * b_k (N <= 3) with csgrt_mul's
+// registers and latency, on N multipliers (II = 1) or on one multiplier that
+// serves the N operand pairs in turn over a beat of three clocks (II = 3;
+// csgrt_beat gives the beat).
+//
+// II = 3: the enclosing pipeline advances once a beat (csgrt_beat's adv, the
+// clock of phase 2), so a_i and b_i are steady for a whole beat. Phase k
+// feeds pair k to the multiplier (csgrt_mul, which runs on every running
+// clock); its product comes out two clocks later and is caught in a hold
+// register: pair 0 at phase 2 of the same beat, pair 1 at phase 0 and pair 2
+// at phase 1 of the next. The next beat's advance copies the held products
+// to p_o, which then holds them for the whole beat after. Timeline, beat k
+// with pairs x0..x2, beat k+1 with y0..y2 (each column one clock):
+//   beat         k          | k+1        | k+2
+//   phase        0   1   2  | 0   1   2  | 0 1 2
+//   mul input    x0  x1  x2 | y0  y1  y2 |
+//   mul output   .   .   x0 | x1  x2  y0 |
+//   caught at the clock's end:
+//                        x0 | x1  x2  y0 |
+//   p_o                     |        <-- | x0 x1 x2 (copied at the end of
+//                                          beat k+1's phase 2, held a beat)
+// So p_o shows the products of the operands of two beats earlier, as
+// csgrt_mul's p_o shows those of two enabled clocks earlier: the pipeline
+// around it keeps its delay lines (csgrt_delay, two stages on adv).
+// II = 1: N csgrt_mul on ce_i (phase_i unused).
+//
+// Latency: 2 beats (II = 1: 2 enabled clocks). Handshake: none (the
+// enclosing pipeline's stall ce_i; everything holds while it is low).
+// Multipliers: N (II = 1) or 1 (II = 3), each A_WIDTH x B_WIDTH.
+module csgrt_mul_vec #(
+    parameter A_WIDTH = 18,   // width of each signed operand a_k (>= 2)
+    parameter B_WIDTH = 18,   // width of each signed operand b_k (>= 2)
+    parameter integer N  = 3, // products (1..3)
+    parameter integer II = 1  // 1: one multiplier per product; 3: one shared
+) (
+    input  wire                           clk_i,
+    input  wire                           rst_ni,    // synchronous, active low
+    input  wire                           ce_i,      // the pipeline runs (low = stall)
+    input  wire [1:0]                     phase_i,   // csgrt_beat's phase (II = 3)
+    input  wire [N*A_WIDTH-1:0]           a_i,       // pair k at k*A_WIDTH
+    input  wire [N*B_WIDTH-1:0]           b_i,
+    output wire [N*(A_WIDTH+B_WIDTH)-1:0] p_o        // product k at k*(A_WIDTH+B_WIDTH)
+);
+
+    localparam PW = A_WIDTH + B_WIDTH;
+
+    genvar k;
+    generate
+        if (II == 1) begin : g_parallel
+            wire unused_phase = ^phase_i;
+            for (k = 0; k < N; k = k + 1) begin : g_mul
+                wire unused_v;
+                csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH)) u_mul (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
+                    .a_i(a_i[k*A_WIDTH +: A_WIDTH]), .b_i(b_i[k*B_WIDTH +: B_WIDTH]),
+                    .valid_o(unused_v), .p_o(p_o[k*PW +: PW]));
+            end
+        end else begin : g_shared
+            // the pair of this phase (a phase without a pair feeds pair 0:
+            // its product is never caught); P1, P2 keep the selects in range
+            localparam integer P1 = (N > 1) ? 1 : 0;
+            localparam integer P2 = (N > 2) ? 2 : 0;
+            reg [A_WIDTH-1:0] a_sel;
+            reg [B_WIDTH-1:0] b_sel;
+            always @* begin
+                a_sel = a_i[0 +: A_WIDTH];
+                b_sel = b_i[0 +: B_WIDTH];
+                if (N > 1 && phase_i == 2'd1) begin
+                    a_sel = a_i[A_WIDTH*P1 +: A_WIDTH];
+                    b_sel = b_i[B_WIDTH*P1 +: B_WIDTH];
+                end
+                if (N > 2 && phase_i == 2'd2) begin
+                    a_sel = a_i[A_WIDTH*P2 +: A_WIDTH];
+                    b_sel = b_i[B_WIDTH*P2 +: B_WIDTH];
+                end
+            end
+            wire [PW-1:0] prod;
+            wire          unused_v;
+            csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH)) u_mul (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
+                .a_i(a_sel), .b_i(b_sel), .valid_o(unused_v), .p_o(prod));
+            // hold register k catches pair k's product (k + 2) mod 3 phases on
+            wire [N*PW-1:0] held;
+            reg  [N*PW-1:0] p_q;
+            for (k = 0; k < N; k = k + 1) begin : g_hold
+                localparam [1:0] CATCH = (k + 2) % 3;
+                reg [PW-1:0] hold_q;
+                always @(posedge clk_i)
+                    if (ce_i && phase_i == CATCH) hold_q <= prod;
+                assign held[k*PW +: PW] = hold_q;
+            end
+            always @(posedge clk_i)
+                if (ce_i && phase_i == 2'd2) p_q <= held;
+            assign p_o = p_q;
+        end
+
+        if (A_WIDTH < 2 || B_WIDTH < 2 || N < 1 || N > 3 || (II != 1 && II != 3)) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: csgrt_mul_vec needs A_WIDTH, B_WIDTH >= 2, 1 <= N <= 3, II = 1 or 3");
+                $finish;
+            end
+        end
+    endgenerate
+
+endmodule
+
+`default_nettype wire
