@@ -150,7 +150,11 @@
 // 2 csgrt_sqrt_core (N, U2).
 // Shared: T, G, N and FD serve the three axes in turn (a hit every third
 // clock); X, Y and U2 serve every child kind (U2's square root is also the
-// shadow distance).
+// shadow distance). II = 3 (csgrt_top's SHADE_II): the children's stages
+// move once every three clocks (csgrt_beat) and X, Y and U2's squares
+// serve their three axes in turn on one multiplier each (csgrt_mul_vec):
+// 6 csgrt_mul fewer (REFRACTION 1; 4 with REFRACTION 0), a child every
+// third clock, the children's 2F+19 stages three times as long.
 // yosys 0.23 synth_ecp5 of this module alone, MAX_LIGHTS 8, USER_WIDTH 1,
 // BITS 16, (REFLECTION, REFRACTION) with SHADOWS 1:
 //   (1, 1): MULT18X18D 39, LUT4 17.7k + CCU2C 3.4k, FF 9.5k, DPR16X4 246, DP16KD 3
@@ -188,7 +192,9 @@ module csgrt_spawn #(
     parameter USER_WIDTH = 1,    // sideband width (>= 1)
     parameter SHADOWS    = 1,    // SHADOW children (s_lights_i); 0: s_lights_i must be 0
     parameter REFLECTION = 1,    // REFLECT children (s_reflect_i); 0: s_reflect_i must be 0
-    parameter REFRACTION = 1     // REFRACT / TIR_REFLECT children (s_refract_i); 0: s_refract_i must be 0
+    parameter REFRACTION = 1,    // REFRACT / TIR_REFLECT children (s_refract_i); 0: s_refract_i must be 0
+    parameter II         = 1     // the children's clocks per child: 1, or 3 with X, Y and U2's
+                                 // three axes on one multiplier each (csgrt_mul_vec)
 ) (
     input  wire                                   clk_i,
     input  wire                                   rst_ni,      // synchronous, active low
@@ -831,7 +837,14 @@ module csgrt_spawn #(
     // =========================================================================
     // Children
     // =========================================================================
-    wire en_c;   // child pipeline enable: the output skid buffer's ready
+    wire en_c;   // the child pipeline runs: the output skid buffer's ready
+    // its registers move on the beat's advance (every running clock for
+    // II = 1, every third for II = 3); the shared multipliers run on every
+    // running clock; a child is issued and leaves only at an advance
+    wire [1:0] ph_c;
+    wire       adv_c;
+    csgrt_beat #(.II(II)) u_beat_c (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_o(ph_c), .adv_o(adv_c));
+    wire last_c = (II == 1) || (ph_c == 2'd2);
 
     // ---- SEQ: the current hit and its pending children ------------------------------
     reg             cur_valid_q;
@@ -844,7 +857,7 @@ module csgrt_spawn #(
     reg             cur_tir_q;
 
     wire [FLW-1:0]  pend  = cur_pend_q & FLAG_MASK;   // the kinds this build has
-    wire            issue = en_c && cur_valid_q;
+    wire            issue = adv_c && cur_valid_q;
     wire [FLW-1:0]  pick  = pend & (~pend + {{(FLW-1){1'b0}}, 1'b1});   // lowest pending
     wire [FLW-1:0]  rest  = pend & ~pick;
     wire            last  = (rest == {FLW{1'b0}});
@@ -916,8 +929,8 @@ module csgrt_spawn #(
     reg [AW-1:0]    c0_a_q;
     always @(posedge clk_i) begin
         if (!rst_ni) c0_valid_q <= 1'b0;
-        else if (en_c) c0_valid_q <= cur_valid_q;
-        if (en_c) begin
+        else if (adv_c) c0_valid_q <= cur_valid_q;
+        if (adv_c) begin
             c0_last_q  <= last;
             c0_kind_q  <= kind;
             c0_light_q <= light;
@@ -937,6 +950,8 @@ module csgrt_spawn #(
     wire [3*YPW-1:0] yp;
     wire [3*LVW-1:0] base;   // SHADOW: lv; else d
     wire [XAW-1:0]   xa_eta; // REFRACT's X factor
+    wire [3*XAW-1:0] xa_v;   // X's operands, axis i at i*XAW
+    wire [3*XBW-1:0] xb_v;
     generate
         if (RF) begin : g_xa_eta
             assign xa_eta = {1'b0, c0_eta_q};
@@ -967,27 +982,26 @@ module csgrt_spawn #(
                     xb = n_b;
                 end
             end
-            wire unused_xv;
-            csgrt_mul #(.A_WIDTH(XAW), .B_WIDTH(XBW)) u_mul_x (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
-                .a_i(xa), .b_i(xb), .valid_o(unused_xv), .p_o(xp[i*XPW +: XPW]));
-            if (RF) begin : g_y
-                wire unused_yv;
-                csgrt_mul #(.A_WIDTH(YAW), .B_WIDTH(YBW)) u_mul_y (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
-                    .a_i(c0_a_q), .b_i(n), .valid_o(unused_yv), .p_o(yp[i*YPW +: YPW]));
-            end else begin : g_no_y
-                assign yp[i*YPW +: YPW] = {YPW{1'b0}};
-            end
+            assign xa_v[i*XAW +: XAW] = xa;
+            assign xb_v[i*XBW +: XBW] = xb;
             // SHADOW: lv; REFLECT, TIR_REFLECT: d (only lv without them; only d without shadows)
             assign base[i*LVW +: LVW] = (SH && (!RDN || c0_kind_q == KIND_SHADOW)) ? l : d_b;
+        end
+        csgrt_mul_vec #(.A_WIDTH(XAW), .B_WIDTH(XBW), .N(3), .II(II)) u_mul_x (
+            .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_i(ph_c), .a_i(xa_v), .b_i(xb_v), .p_o(xp));
+        if (RF) begin : g_y
+            csgrt_mul_vec #(.A_WIDTH(YAW), .B_WIDTH(YBW), .N(3), .II(II)) u_mul_y (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_i(ph_c), .a_i({3{c0_a_q}}), .b_i(c0_n_q),
+                .p_o(yp));
+        end else begin : g_no_y
+            assign yp = {(3*YPW){1'b0}};
         end
     endgenerate
     localparam XSDW = 3 * LVW + 3 + LW + 1;
     wire            x_valid;
     wire [XSDW-1:0] x_side;
     csgrt_delay #(.WIDTH(XSDW), .STAGES(2)) u_dly_x (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .valid_i(c0_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_c), .valid_i(c0_valid_q),
         .data_i({c0_last_q, c0_light_q, c0_kind_q, base}), .valid_o(x_valid), .data_o(x_side));
     wire [3*LVW-1:0] x_base  = x_side[0 +: 3*LVW];
     wire [2:0]       x_kind  = x_side[3*LVW +: 3];
@@ -1054,8 +1068,8 @@ module csgrt_spawn #(
     reg [3*VW2-1:0] c3_v_q;
     always @(posedge clk_i) begin
         if (!rst_ni) c3_valid_q <= 1'b0;
-        else if (en_c) c3_valid_q <= x_valid;
-        if (en_c) begin
+        else if (adv_c) c3_valid_q <= x_valid;
+        if (adv_c) begin
             c3_v_q     <= v_d;
             c3_kind_q  <= x_kind;
             c3_light_q <= x_light;
@@ -1070,8 +1084,8 @@ module csgrt_spawn #(
     wire [3*UOW-1:0] u2_u;
     wire [SQ-1:0]    u2_root;
     wire [U2UW-1:0]  u2_user;
-    csgrt_unit #(.VW(VW2), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(U2UW)) u_unit_c (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_i(2'd0), .valid_i(c3_valid_q),
+    csgrt_unit #(.VW(VW2), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(U2UW), .II(II)) u_unit_c (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_i(ph_c), .valid_i(c3_valid_q),
         .v_i(c3_v_q), .user_i({c3_lit_q, c3_last_q, c3_light_q, c3_kind_q}),
         .valid_o(u2_valid), .u_o(u2_u), .root_o(u2_root), .user_o(u2_user));
     wire [2:0]    o_kind  = u2_user[0 +: 3];
@@ -1082,7 +1096,7 @@ module csgrt_spawn #(
     // ---- the hit's p, d, in_range, user for its children ---------------------------------
     localparam QOW = 6 * B + 1 + UW;
     wire [QOW-1:0] qo_data;
-    wire           qo_pop = en_c && u2_valid && o_last;
+    wire           qo_pop = adv_c && u2_valid && o_last;
     wire           unused_qo_valid;
     csgrt_fifo #(.WIDTH(QOW), .DEPTH(CTX)) u_q_out (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(qo_push), .ready_o(qo_ready),
@@ -1107,7 +1121,7 @@ module csgrt_spawn #(
     localparam OUTW = 1 + 3 + LW + 3 * B + 1 + 3 * B + (B + 1) + 1 + UW;
     csgrt_skid #(.WIDTH(OUTW)) u_skid (
         .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(u2_valid), .ready_o(en_c),
+        .valid_i(u2_valid && last_c), .ready_o(en_c),
         .data_i({qo_user, o_lit, o_dist, o_dir, qo_inr, qo_p, o_light, o_kind, o_last}),
         .valid_o(m_valid_o), .ready_i(m_ready_i),
         .data_o({m_user_o, m_lit_o, m_dist_o, m_d_o, m_in_range_o, m_o_o, m_light_o, m_kind_o, m_last_o}));

@@ -43,7 +43,7 @@ module csgrt_top #(
     parameter CONTEXTS      = 8,     // pixels in flight in the ray tree
     parameter MAX_DEPTH     = 8,     // ray tree depth the stack holds (>= max_trace_level)
     parameter SORT_INSERTS  = 1,     // events each lane's sorter inserts per clock: 1, or 2 (more logic, 0-3 % fewer cycles)
-    parameter SHADE_II      = 3,     // clocks per item of the shading and the ray tree's arithmetic: 3 (a third of the multipliers, < 1 % more cycles), or 1
+    parameter SHADE_II      = 3,     // clocks per item of the shading, the ray tree's arithmetic and the secondary rays' children: 3 (a third of their multipliers, ~1 % more cycles), or 1
     // derived
     parameter LEAF_BITS     = $clog2(MAX_LEAVES),
     parameter SLOTS         = 1 << TREE_HEIGHT
@@ -528,7 +528,7 @@ module csgrt_top #(
             );
 
             csgrt_spawn #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .USER_WIDTH(CB), .SHADOWS(SHADOWS),
-                          .REFLECTION(REFLECTION), .REFRACTION(REFRACTION)) u_spawn (
+                          .REFLECTION(REFLECTION), .REFRACTION(REFRACTION), .II(SHADE_II)) u_spawn (
                 .clk_i, .rst_ni, .light_pos_i (light_pos),
                 .s_valid_i (sp_valid), .s_ready_o (sp_ready), .s_o_i (sp_o), .s_d_i (sp_d), .s_t_i (sp_t),
                 .s_coef_i (sp_coef), .s_ior_from_i (sp_ior_from), .s_ior_to_i (sp_ior_to), .s_lights_i (sp_lights),

@@ -96,6 +96,9 @@ struct Out {
 // Dut<ID>: the instance ID; 12, 16, 24, 32 have every child kind (BITS = ID),
 // kB16Refl is BITS 16 without refraction, kB16Shadow BITS 16 with shadows only.
 constexpr int kB16Refl = 1016, kB16Shadow = 2016;
+// the children's clocks per child (tb_spawn.v: b32 and b16r are time-shared)
+template <int ID>
+constexpr int kII = (ID == 32 || ID == kB16Refl) ? 3 : 1;
 template <int ID>
 struct Dut;
 #define SPAWN_DUT(ID, TAG, NB)                                                                     \
@@ -681,13 +684,21 @@ TEST(Spawn, Bits32) { all_checks<32>(tb::seed(3200)); }
 // so at BITS 24 and 32 a hit every (3F+43)/32 clocks at most.
 // Without refraction the sequencer waits for the normal's queue instead of
 // the refraction stages' (F+7 clocks fewer): latency 4F+56, a credit held
-// for 2F+36 clocks.
+// for 2F+36 clocks. Time-shared children (II = 3): the children's 2F+19
+// stages before the output skid take three clocks each (up to two more to
+// reach a beat's end), a child every third clock, and the hits between the
+// sequencer and their last child's exit (the output queue, CTX = 32 of
+// them, each there for its n children's issue and the 2F+19 stages) bound
+// a hit every 3 (2F+20+n) / 32 clocks when hits have few children (7.6 at
+// BITS 32; the ray tree sends a hit every 25 clocks or more).
 template <int ID>
 void throughput(bool reflection = true, bool refraction = true) {
     constexpr int NB = Dut<ID>::kBits;
     const csgrt::Formats fmt(NB);
     const int F = fmt.frac;
+    constexpr int ii = kII<ID>;
     const int latency = refraction ? 5 * F + 63 : 4 * F + 56, hold = refraction ? 3 * F + 43 : 2 * F + 36;
+    const int child_stages = 2 * F + 19;   // C0, X, C3, U2 (the output skid is not time-shared)
     std::mt19937_64 rng(77);
     const std::vector<V3> lights = random_lights(fmt, rng);
     for (int per_hit : {1, 2, 3, 4, 5, 11}) {
@@ -710,13 +721,20 @@ void throughput(bool reflection = true, bool refraction = true) {
         EXPECT_TRUE(s.ok()) << s.summary();
         EXPECT_EQ(s.children, size_t(n) * reqs.size());
         const double busy = double(s.cycles - 300 - s.min_latency);
-        const double hit_interval = std::max({double(n), 3.0, double(hold) / 32.0});
+        const double hit_interval = std::max({double(ii * n), 3.0, double(hold) / 32.0,
+                                              ii == 3 ? 3.0 * (child_stages + n + 1) / 32.0 : 0.0});
         std::printf("spawn BITS=%d%s back to back, %d children per hit: %llu children in %llu cycles: %.3f clocks "
-                    "per child, %.3f per hit (bound %.3f); latency %d..%d\n",
+                    "per child, %.3f per hit (bound %.3f); latency %d..%d%s\n",
                     NB, refraction ? "" : reflection ? " (no refraction)" : " (shadows only)", n,
                     (unsigned long long)s.children, (unsigned long long)s.cycles, busy / double(s.children),
-                    busy / double(s.requests), hit_interval, s.min_latency, s.max_latency);
-        EXPECT_EQ(s.min_latency, latency);
+                    busy / double(s.requests), hit_interval, s.min_latency, s.max_latency,
+                    ii == 3 ? " (II 3)" : "");
+        if (ii == 1) {
+            EXPECT_EQ(s.min_latency, latency);
+        } else {
+            EXPECT_GE(s.min_latency, latency + 2 * child_stages);
+            EXPECT_LE(s.min_latency, latency + 2 * child_stages + 2);
+        }
         EXPECT_LE(busy / double(s.requests), hit_interval + 0.02);
     }
 }

@@ -3,7 +3,9 @@
 // USER_WIDTH 16) at BITS 12, 16, 24 and 32 with every child kind, and at
 // BITS 16 without refraction (b16r: SHADOWS, REFLECTION) and with shadows
 // only (b16s), one clock each so that only the instance under test is
-// evaluated.
+// evaluated. b32 and b16r run their children time-shared (II = 3: a child
+// every third clock, X, Y and U2's axes on one multiplier each; tb_spawn.cpp
+// kII), the others at a child per clock.
 module tb_spawn (
     input  wire              b12_clk_i,
     input  wire              b12_rst_ni,
@@ -199,7 +201,7 @@ module tb_spawn (
         .m_light_o(b24_light_o), .m_o_o(b24_o_o), .m_in_range_o(b24_in_range_o), .m_d_o(b24_d_o),
         .m_dist_o(b24_dist_o), .m_lit_o(b24_lit_o), .m_user_o(b24_user_o));
 
-    csgrt_spawn #(.BITS(32), .MAX_LIGHTS(8), .USER_WIDTH(16)) u_b32 (
+    csgrt_spawn #(.BITS(32), .MAX_LIGHTS(8), .USER_WIDTH(16), .II(3)) u_b32 (
         .clk_i(b32_clk_i), .rst_ni(b32_rst_ni), .light_pos_i(b32_light_pos_i),
         .s_valid_i(b32_valid_i), .s_ready_o(b32_ready_o), .s_o_i(b32_o_i), .s_d_i(b32_d_i), .s_t_i(b32_t_i),
         .s_coef_i(b32_coef_i), .s_ior_from_i(b32_ior_from_i), .s_ior_to_i(b32_ior_to_i),
@@ -211,7 +213,7 @@ module tb_spawn (
 
     // BITS 16, shadows and reflection (no refraction datapath)
     csgrt_spawn #(.BITS(16), .MAX_LIGHTS(8), .USER_WIDTH(16),
-                  .SHADOWS(1), .REFLECTION(1), .REFRACTION(0)) u_b16r (
+                  .SHADOWS(1), .REFLECTION(1), .REFRACTION(0), .II(3)) u_b16r (
         .clk_i(b16r_clk_i), .rst_ni(b16r_rst_ni), .light_pos_i(b16r_light_pos_i),
         .s_valid_i(b16r_valid_i), .s_ready_o(b16r_ready_o), .s_o_i(b16r_o_i), .s_d_i(b16r_d_i), .s_t_i(b16r_t_i),
         .s_coef_i(b16r_coef_i), .s_ior_from_i(b16r_ior_from_i), .s_ior_to_i(b16r_ior_to_i),
