@@ -139,8 +139,9 @@ SPECULAR   ?= 1
 # with more logic for 0-3 % fewer cycles; docs/architecture.md); a build
 # with 2 gets the suffix i2
 SORT_INSERTS ?= 1
-# the shading's and the ray tree's clocks per item (csgrt_top SHADE_II: 3,
-# a third of their multipliers; or 1, < 1 % fewer cycles;
+# the clocks per item of the shading, the ray tree's arithmetic and the
+# secondary rays' children (csgrt_top SHADE_II: 3,
+# a third of their multipliers; or 1, ~2 % fewer cycles;
 # docs/architecture.md); a build with 1 gets the suffix h1
 SHADE_II ?= 3
 SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHADE_II)),h1,)

@@ -43,7 +43,7 @@ module csgrt_top #(
     parameter CONTEXTS      = 8,     // pixels in flight in the ray tree
     parameter MAX_DEPTH     = 8,     // ray tree depth the stack holds (>= max_trace_level)
     parameter SORT_INSERTS  = 1,     // events each lane's sorter inserts per clock: 1, or 2 (more logic, 0-3 % fewer cycles)
-    parameter SHADE_II      = 3,     // clocks per item of the shading, the ray tree's arithmetic and the secondary rays' children: 3 (a third of their multipliers, ~1 % more cycles), or 1
+    parameter SHADE_II      = 3,     // clocks per item of the shading, the ray tree's arithmetic and the secondary rays' children: 3 (a third of their multipliers, ~2 % more cycles), or 1
     // derived
     parameter LEAF_BITS     = $clog2(MAX_LEAVES),
     parameter SLOTS         = 1 << TREE_HEIGHT

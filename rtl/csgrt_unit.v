@@ -22,7 +22,11 @@
 // II = 3 (a time-shared pipeline, csgrt_beat): every register moves on the
 // beat's advance (ce_i at phase_i 2), so the latency is counted in beats
 // and the throughput is a vector per beat; the three squares share one
-// multiplier (csgrt_mul_vec). Multipliers: 1.
+// multiplier (csgrt_mul_vec), and the three divisions one csgrt_div_core
+// running on every clock, fed axis k at phase k, its quotients caught as
+// they come out exactly as csgrt_mul_vec catches products (the divider's
+// FRAC+2 clocks padded by 0 to 2 registers to 2 mod 3: D takes
+// (FRAC+2+pad+4)/3 beats, 7 for FRAC 15). Multipliers: 1; dividers: 1.
 // Users: csgrt_shade_unit (shading, FRAC 15, 17 stages), csgrt_spawn
 // (normals and secondary-ray directions, FRAC F, F+8 stages).
 module csgrt_unit #(
@@ -124,6 +128,66 @@ module csgrt_unit #(
     wire [2:0]      d_neg, d_ovf;
     wire [DUW-1:0]  d_user;
     generate
+        if (II == 3) begin : g_div_shared
+            // one divider, axis k at phase k; its output {neg, quot} reaches
+            // the end of the pad after DLE = 3m + 2 clocks, so axis k's is
+            // caught at phase (k + 2) mod 3 and all three are copied at the
+            // next advance (csgrt_mul_vec's scheme, with 3m more clocks)
+            localparam DL  = QB + 1;                     // csgrt_div_core's latency
+            localparam PAD = (5 - (DL % 3)) % 3;         // DL + PAD = 2 mod 3
+            localparam DB  = (DL + PAD + 4) / 3;         // beats from P to O's input
+            reg [NUMW-1:0] num_sel;
+            always @* begin
+                case (phase_i)
+                    2'd1:    num_sel = p_num_q[NUMW +: NUMW];
+                    2'd2:    num_sel = p_num_q[2*NUMW +: NUMW];
+                    default: num_sel = p_num_q[0 +: NUMW];
+                endcase
+            end
+            wire          dq_neg, dq_ovf, unused_dv, unused_du;
+            wire [QB-1:0] dq_mag;
+            csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
+                .num_i(num_sel), .den_i(p_len_q), .user_i(1'b0),
+                .valid_o(unused_dv), .quot_o(dq_mag), .neg_o(dq_neg), .ovf_o(dq_ovf), .user_o(unused_du));
+            wire unused_dq_ovf = dq_ovf;   // |v_i| < L: never overflows
+            // the pad: PAD registers on the running clock
+            wire [QB:0] padded;
+            if (PAD == 0) begin : g_pad0
+                assign padded = {dq_neg, dq_mag};
+            end else begin : g_pad
+                reg [QB:0] pad_q [0:PAD-1];
+                integer pk;
+                always @(posedge clk_i)
+                    if (ce_i) begin
+                        pad_q[0] <= {dq_neg, dq_mag};
+                        for (pk = 1; pk < PAD; pk = pk + 1) pad_q[pk] <= pad_q[pk-1];
+                    end
+                assign padded = pad_q[PAD-1];
+            end
+            wire [3*(QB+1)-1:0] held;
+            reg  [3*(QB+1)-1:0] d_q;
+            for (i = 0; i < 3; i = i + 1) begin : g_hold
+                localparam [1:0] CATCH = (i + 2) % 3;
+                reg [QB:0] hold_q;
+                always @(posedge clk_i)
+                    if (ce_i && phase_i == CATCH) hold_q <= padded;
+                assign held[i*(QB+1) +: QB+1] = hold_q;
+                assign d_mag[i*QB +: QB] = d_q[i*(QB+1) +: QB];
+                assign d_neg[i]          = d_q[i*(QB+1) + QB];
+            end
+            always @(posedge clk_i)
+                if (adv) d_q <= held;
+            assign d_ovf = 3'b000;
+            // the valid bit and the sideband: DB beats (DB - 1 of them in the
+            // ring buffer, the last in d_q's place)
+            wire unused_dvld;
+            csgrt_delay #(.WIDTH(1), .STAGES(DB)) u_dly_dv (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p_valid_q), .data_i(1'b0),
+                .valid_o(d_valid), .data_o(unused_dvld));
+            csgrt_delay_ram #(.WIDTH(DUW), .STAGES(DB)) u_dly_du (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .data_i(p_user_q), .data_o(d_user));
+        end else begin : g_div_parallel
         for (i = 0; i < 3; i = i + 1) begin : g_div
             if (i == 0) begin : g_main
                 csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(DUW)) u_div (
@@ -139,6 +203,7 @@ module csgrt_unit #(
                     .valid_o(unused_v), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
                     .user_o(unused_u));
             end
+        end
         end
     endgenerate
     // |v_i| < L: never overflows
