@@ -66,6 +66,14 @@
 // light k adds k clocks.
 // Throughput: segment A one pixel per clock; segment B one light per clock:
 // a hit pixel every max(1, lights) clocks, a miss every clock.
+// II = 3 (time-shared, csgrt_beat): every stage moves once every three
+// running clocks, and the products of a stage (its three axes or channels,
+// or the power step's two) share one multiplier (csgrt_mul_vec), the unit
+// vectors' divisions one divider (csgrt_unit): 25 csgrt_mul (11 without the
+// specular unit), 2 csgrt_div_core instead of 6; a pixel or light item
+// every third clock; the input is registered first (the shared A0
+// multiplier reads it for a whole beat); latency 322 clocks (BITS any,
+// one light, no back-pressure).
 // Handshake: valid/ready on both sides; s_ready_o is skid A's registered
 // ready, never combinational from m_ready_i. Config (lights, background) is
 // read when a pixel's items are issued (the light positions through a
