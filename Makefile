@@ -107,14 +107,14 @@ endef
 # without a build of their own; frame24u2 is also the one whose event
 # sorters insert two events per clock (SORT_INSERTS=2; the others: 1), and
 # the two-lane builds shade and run the ray tree's arithmetic at a pixel or
-# item per clock (SHADE_II=1; the others: 3, the time-shared default)
+# item per clock (SHARE_II=1; the others: 3, the time-shared default)
 FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 $(BUILD)/tb/frame24u2 \
               $(BUILD)/tb/frame16fx $(BUILD)/tb/frame24fx $(BUILD)/tb/frame16fxu2
 FRAME_DEPS := $(RTL_SRC) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a
 $(BUILD)/tb/frame%: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,$*,tb/frame/tb_frame.cpp,-DFRAME_BITS=$* -DFRAME_UNITS=1,-lgtest -lgtest_main,1)
 $(BUILD)/tb/frame24u2: $(FRAME_DEPS) | deps
-	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=2 -DFRAME_SPECULAR=0,-lgtest -lgtest_main,2,-GSPECULAR=0 -GSORT_INSERTS=2 -GSHADE_II=1)
+	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=2 -DFRAME_SPECULAR=0,-lgtest -lgtest_main,2,-GSPECULAR=0 -GSORT_INSERTS=2 -GSHARE_II=1)
 # with every effect unit (the ray tree: shadows, reflection, refraction)
 FX_UNITS := -GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1
 FX_DEFS  := -DFRAME_UNITS=1 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=1
@@ -124,7 +124,7 @@ $(BUILD)/tb/frame24fx: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS))
 # shadows and reflection with two intersection lanes (refraction needs one lane)
 $(BUILD)/tb/frame16fxu2: $(FRAME_DEPS) | deps
-	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 -DFRAME_UNITS=2 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=0 -DFRAME_SPECULAR=0,-lgtest -lgtest_main,2,-GSHADOWS=1 -GREFLECTION=1 -GSPECULAR=0 -GSHADE_II=1)
+	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 -DFRAME_UNITS=2 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=0 -DFRAME_SPECULAR=0,-lgtest -lgtest_main,2,-GSHADOWS=1 -GREFLECTION=1 -GSPECULAR=0 -GSHARE_II=1)
 
 # make sim: the project's main job. The build has the effect units the
 # scene uses (`csgrt units`: shadows, reflection, refraction, specular
@@ -139,16 +139,16 @@ SPECULAR   ?= 1
 # with more logic for 0-3 % fewer cycles; docs/architecture.md); a build
 # with 2 gets the suffix i2
 SORT_INSERTS ?= 1
-# the clocks per item of the shading, the ray tree's arithmetic and the
-# secondary rays' children (csgrt_top SHADE_II: 3,
-# a third of their multipliers; or 1, ~2 % fewer cycles;
-# docs/architecture.md); a build with 1 gets the suffix h1
-SHADE_II ?= 3
-SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHADE_II)),h1,)
+# the clocks per item of the camera, the shading, the ray tree's arithmetic
+# and the secondary rays' children (csgrt_top SHARE_II: 3,
+# a third of their multipliers; or 1, ~1 % fewer cycles;
+# docs/architecture.md); a build with 1 gets the suffix ii1
+SHARE_II ?= 3
+SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHARE_II)),ii1,)
 SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
 $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION) -DCSGRT_SPECULAR=$(SPECULAR),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION) -GSPECULAR=$(SPECULAR) -GSORT_INSERTS=$(SORT_INSERTS) -GSHADE_II=$(SHADE_II),--trace-fst)
+	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION) -DCSGRT_SPECULAR=$(SPECULAR),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION) -GSPECULAR=$(SPECULAR) -GSORT_INSERTS=$(SORT_INSERTS) -GSHARE_II=$(SHARE_II),--trace-fst)
 
 sim: model
 	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1 REFRACTION=1 SPECULAR=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0 REFRACTION=0 SPECULAR=1,$$($(BUILD)/csgrt units $(SCENE))))" \
@@ -175,7 +175,7 @@ BAUD ?= 3000000
 synth: deps
 	@tools/synth.sh --bits $(BITS) --effects $(if $(filter scene,$(EFFECTS)),none,$(EFFECTS)) \
 	    $(if $(filter 0,$(SPECULAR)),--no-specular) $(if $(filter 2,$(SORT_INSERTS)),--sort-inserts 2) \
-	    $(if $(filter 1,$(SHADE_II)),--shade-ii 1) \
+	    $(if $(filter 1,$(SHARE_II)),--share-ii 1) \
 	    $(if $(filter-out 1,$(UNITS)),--units $(UNITS)) \
 	    --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
 

@@ -12,18 +12,23 @@
 // CW = F+16 bits modulo 2^CW: only the low CW bits of base/dx/dy matter,
 // because every v fits CW bits signed (|v| < 8).
 //
+// d is unit_fx(vr, F, F+8): csgrt_unit computes it.
+//
 // Pipeline (one global enable, the output skid buffer's registered ready):
 //   G   (1)    generator register: x, y, v, last
 //   R   (1)    vr = rnd(v, 8)
-//   M   (2)    vr_i^2, three csgrt_mul (VW x VW)
-//   S   (1)    sum of squares
-//   Q   (F+8)  csgrt_sqrt_core
-//   P   (1)    L = root + 1, numerators vr << F
-//   D   (F+2)  three csgrt_div_core in parallel
+//   U   (2F+15) csgrt_unit (VW = F+8, FRAC F, F+8 square-root stages): the
+//              squares, their sum, the square root, L = root + 1, the
+//              divisions vr << F / L, the signed quotients
 //   skid(1)    csgrt_skid
-// Latency from a generated ray to its output: 2F+17 clocks (BITS 12: 35,
-// 24: 59); the first ray appears 2F+18 clocks after start. Throughput: one
+// Latency from a generated ray to its output: 2F+18 clocks (BITS 12: 36,
+// 24: 60); the first ray appears 2F+19 clocks after start. Throughput: one
 // ray per clock. Multipliers: 3 (VW x VW, VW = F+8 = B+5).
+// II = 3 (csgrt_top's SHARE_II; csgrt_beat): a ray every third clock, every
+// register moving on the beat's advance, csgrt_unit's squares on one
+// multiplier and its divisions on one divider; the rays still leave in
+// raster order (the intersection unit takes a ray per candidate leaf and
+// clock, so the camera only limits scenes with fewer than three leaves).
 // Handshake: m_valid_o/m_ready_i; a ray moves when both are high at a
 // rising edge. Back-pressure stalls the whole pipeline and the generator.
 // done_o pulses for one clock after the frame's last ray has been accepted;
@@ -33,7 +38,8 @@
 // origin, width, height are kept for the frame). width/height are 12 bits:
 // 1..4095, and 0 stands for 4096 (the counters wrap).
 module csgrt_camera #(
-    parameter BITS = 24   // coordinate width B (12..32)
+    parameter BITS = 24,  // coordinate width B (12..32)
+    parameter II   = 1    // clocks per ray: 1, or 3 (time-shared, a third of the multipliers and dividers)
 ) (
     input  wire             clk_i,
     input  wire             rst_ni,     // synchronous, active low
@@ -62,13 +68,13 @@ module csgrt_camera #(
     localparam CW  = F + 16;      // v: CF = F+12 fraction bits, |v| < 8
     localparam VW  = F + 8;       // vr: F+4 fraction bits, |vr| < 8
     localparam SQ  = F + 8;       // square-root stages: sum vr^2 < 2^(2F+16)
-    localparam LW  = SQ + 2;      // L = root + 1 <= 2^SQ, signed
-    localparam NW  = VW + F;      // numerator vr << F
-    localparam QB  = F + 1;       // quotient bits
-    localparam PW  = 2 * VW;      // square width
-    localparam SW  = 2 * SQ;      // sum of squares (< 2^(2F+16))
+    localparam UOW = F + 2;       // csgrt_unit's output component, F fraction bits, signed
 
-    wire en;   // global stage enable = output skid ready
+    wire       en;    // the pipeline runs: the output skid's ready
+    wire [1:0] ph;
+    wire       adv;   // the beat's advance: every register moves on it
+    csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .phase_o(ph), .adv_o(adv));
+    wire last = (II == 1) || (ph == 2'd2);
 
     // ---- generator -----------------------------------------------------------
     reg [3*CW-1:0] dx_q, dy_q;   // component k at k*CW
@@ -81,7 +87,7 @@ module csgrt_camera #(
     reg           busy_q;
 
     wire gen_last = (x_q == wm1_q) && (y_q == hm1_q);
-    wire gen_fire = en && active_q;
+    wire gen_fire = adv && active_q;
 
     // G: the generator's output register
     reg          g_valid_q, g_last_q;
@@ -96,7 +102,7 @@ module csgrt_camera #(
         end else begin
             if (start_i) active_q <= 1'b1;
             else if (gen_fire && gen_last) active_q <= 1'b0;
-            if (en) g_valid_q <= active_q && !start_i;
+            if (adv) g_valid_q <= active_q && !start_i;
         end
         if (start_i) begin
             for (k = 0; k < 3; k = k + 1) begin
@@ -123,7 +129,7 @@ module csgrt_camera #(
                 for (k = 0; k < 3; k = k + 1) v_q[k*CW +: CW] <= v_q[k*CW +: CW] + dx_q[k*CW +: CW];
             end
         end
-        if (en) begin
+        if (adv) begin
             g_x_q    <= x_q;
             g_y_q    <= y_q;
             g_v_q    <= v_q;
@@ -149,102 +155,28 @@ module csgrt_camera #(
     reg [SIDEW-1:0] r_side_q;
     always @(posedge clk_i) begin
         if (!rst_ni) r_valid_q <= 1'b0;
-        else if (en) r_valid_q <= g_valid_q;
-        if (en) begin
+        else if (adv) r_valid_q <= g_valid_q;
+        if (adv) begin
             r_vr_q   <= vr_d;
             r_side_q <= {g_last_q, g_y_q, g_x_q};
         end
     end
 
-    // ---- M: squares ------------------------------------------------------------
-    wire [3*PW-1:0] sq;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_sq
-            wire unused_v;
-            csgrt_mul #(.A_WIDTH(VW), .B_WIDTH(VW)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(r_valid_q),
-                .a_i(r_vr_q[i*VW +: VW]), .b_i(r_vr_q[i*VW +: VW]),
-                .valid_o(unused_v), .p_o(sq[i*PW +: PW]));
-        end
-    endgenerate
-    localparam M_W = SIDEW + 3 * VW;
-    wire           m_valid;
-    wire [M_W-1:0] m_side;
-    csgrt_delay #(.WIDTH(M_W), .STAGES(2)) u_dly_m (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(r_valid_q),
-        .data_i({r_side_q, r_vr_q}), .valid_o(m_valid), .data_o(m_side));
-
-    // ---- S: sum of squares -----------------------------------------------------
-    // squares are non-negative; the sum is below 2^(2F+16) = 2^SW
-    wire [PW:0] sum_full = {1'b0, sq[0*PW +: PW]} + {1'b0, sq[1*PW +: PW]} + {1'b0, sq[2*PW +: PW]};
-    wire        unused_sum = ^sum_full[PW:SW];
-    reg           s_valid_q;
-    reg [SW-1:0]  s_n_q;
-    reg [M_W-1:0] s_side_q;
-    always @(posedge clk_i) begin
-        if (!rst_ni) s_valid_q <= 1'b0;
-        else if (en) s_valid_q <= m_valid;
-        if (en) begin
-            s_n_q    <= sum_full[SW-1:0];
-            s_side_q <= m_side;
-        end
-    end
-
-    // ---- Q: square root ----------------------------------------------------------
-    wire           q_valid;
-    wire [SQ-1:0]  q_root;
-    wire [M_W-1:0] q_side;
-    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(M_W)) u_sqrt (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(s_valid_q),
-        .n_i(s_n_q), .user_i(s_side_q),
-        .valid_o(q_valid), .root_o(q_root), .user_o(q_side));
-
-    // ---- P: L = root + 1, numerators vr << F -------------------------------------
-    reg             p_valid_q;
-    reg [LW-1:0]    p_len_q;
-    reg [3*NW-1:0]  p_num_q;
-    reg [SIDEW-1:0] p_side_q;
-    always @(posedge clk_i) begin
-        if (!rst_ni) p_valid_q <= 1'b0;
-        else if (en) p_valid_q <= q_valid;
-        if (en) begin
-            p_len_q  <= {2'b00, q_root} + {{(LW-1){1'b0}}, 1'b1};
-            p_num_q  <= {q_side[2*VW +: VW], {F{1'b0}}, q_side[VW +: VW], {F{1'b0}}, q_side[0 +: VW], {F{1'b0}}};
-            p_side_q <= q_side[3*VW +: SIDEW];
-        end
-    end
-
-    // ---- D: three divisions ------------------------------------------------------
-    wire             d_valid;
-    wire [3*QB-1:0]  d_mag;
-    wire [2:0]       d_neg, d_ovf;
+    // ---- U: d = unit_fx(vr, F, F+8) ------------------------------------------------
+    wire             u_valid;
+    wire [3*UOW-1:0] u_d;
+    wire [SQ-1:0]    unused_root;
     wire [SIDEW-1:0] d_side;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_div
-            if (i == 0) begin : g_main
-                csgrt_div_core #(.NUM_WIDTH(NW), .DEN_WIDTH(LW), .QUOT_BITS(QB), .USER_WIDTH(SIDEW)) u_div (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p_valid_q),
-                    .num_i(p_num_q[i*NW +: NW]), .den_i(p_len_q), .user_i(p_side_q),
-                    .valid_o(d_valid), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
-                    .user_o(d_side));
-            end else begin : g_other
-                wire unused_v, unused_u;
-                csgrt_div_core #(.NUM_WIDTH(NW), .DEN_WIDTH(LW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p_valid_q),
-                    .num_i(p_num_q[i*NW +: NW]), .den_i(p_len_q), .user_i(1'b0),
-                    .valid_o(unused_v), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
-                    .user_o(unused_u));
-            end
-        end
-    endgenerate
-    // |vr_i| < L: never overflows
-    wire unused_ovf = ^d_ovf;
+    csgrt_unit #(.VW(VW), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(SIDEW), .II(II)) u_unit (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .phase_i(ph), .valid_i(r_valid_q),
+        .v_i(r_vr_q), .user_i(r_side_q),
+        .valid_o(u_valid), .u_o(u_d), .root_o(unused_root), .user_o(d_side));
 
     wire [3*B-1:0] dir;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_dir
-            wire [B-1:0] mag = {{(B-QB){1'b0}}, d_mag[i*QB +: QB]};
-            assign dir[i*B +: B] = d_neg[i] ? {B{1'b0}} - mag : mag;
+            wire [UOW-1:0] u = u_d[i*UOW +: UOW];
+            assign dir[i*B +: B] = {u[UOW-1], u};   // B = F+3 = UOW+1
         end
     endgenerate
 
@@ -253,7 +185,7 @@ module csgrt_camera #(
     wire             out_last;
     csgrt_skid #(.WIDTH(OUTW)) u_skid (
         .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(d_valid), .ready_o(en),
+        .valid_i(u_valid && last), .ready_o(en),
         .data_i({d_side, origin_q, dir}),
         .valid_o(m_valid_o), .ready_i(m_ready_i),
         .data_o({out_last, m_y_o, m_x_o, m_o_o, m_d_o}));

@@ -150,7 +150,7 @@
 // 2 csgrt_sqrt_core (N, U2).
 // Shared: T, G, N and FD serve the three axes in turn (a hit every third
 // clock); X, Y and U2 serve every child kind (U2's square root is also the
-// shadow distance). II = 3 (csgrt_top's SHADE_II): the children's stages
+// shadow distance). II = 3 (csgrt_top's SHARE_II): the children's stages
 // move once every three clocks (csgrt_beat) and X, Y and U2's squares
 // serve their three axes in turn on one multiplier each (csgrt_mul_vec):
 // 6 csgrt_mul fewer (REFRACTION 1; 4 with REFRACTION 0), a child every

@@ -43,7 +43,8 @@ module csgrt_top #(
     parameter CONTEXTS      = 8,     // pixels in flight in the ray tree
     parameter MAX_DEPTH     = 8,     // ray tree depth the stack holds (>= max_trace_level)
     parameter SORT_INSERTS  = 1,     // events each lane's sorter inserts per clock: 1, or 2 (more logic, 0-3 % fewer cycles)
-    parameter SHADE_II      = 3,     // clocks per item of the shading, the ray tree's arithmetic and the secondary rays' children: 3 (a third of their multipliers, ~2 % more cycles), or 1
+    parameter SHARE_II      = 3,     // clocks per item of the blocks off the intersection unit's rate (camera, shading, the ray tree's
+                                     // arithmetic, the secondary rays' children): 3 (a third of their multipliers, ~1 % more cycles), or 1
     // derived
     parameter LEAF_BITS     = $clog2(MAX_LEAVES),
     parameter SLOTS         = 1 << TREE_HEIGHT
@@ -149,7 +150,7 @@ module csgrt_top #(
         if (!rst_ni) ties_regular_q <= 1'b0;
         else if (start) ties_regular_q <= ties_regular_i;
 
-    csgrt_camera #(.BITS(BITS)) u_camera (
+    csgrt_camera #(.BITS(BITS), .II(SHARE_II)) u_camera (
         .clk_i, .rst_ni,
         .origin_i (cam_origin), .base_i (cam_base), .dx_i (cam_dx), .dy_i (cam_dy),
         .width_i (width), .height_i (height),
@@ -433,7 +434,7 @@ module csgrt_top #(
                                 l_from_q, ior_a, ior_b, mat_clear, leaf_c_coef,
                                 light_shadowless};   // every light is unshadowed here
             csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE), .SPECULAR(SPECULAR),
-                          .II(SHADE_II)) u_shade (
+                          .II(SHARE_II)) u_shade (
                 .clk_i, .rst_ni,
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
                 .light_color_i (light_col), .background_i (background),
@@ -497,7 +498,7 @@ module csgrt_top #(
                 .BITS(BITS), .TREE_HEIGHT(TREE_HEIGHT), .MAX_LIGHTS(MAX_LIGHTS), .CONTEXTS(CONTEXTS),
                 .MAX_DEPTH(MAX_DEPTH), .LOOK_BEHIND(LOOK_BEHIND), .SHADOWS(SHADOWS), .REFLECTION(REFLECTION),
                 .REFRACTION(REFRACTION),
-                .DIST_W(DIST_W), .MAT_W(MAT_W), .COL_W(31), .SPEC_W(26), .LUT_FILE(LUT_FILE), .II(SHADE_II)
+                .DIST_W(DIST_W), .MAT_W(MAT_W), .COL_W(31), .SPEC_W(26), .LUT_FILE(LUT_FILE), .II(SHARE_II)
             ) u_raytree (
                 .clk_i, .rst_ni, .start_i (start),
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_color_i (light_col),
@@ -528,7 +529,7 @@ module csgrt_top #(
             );
 
             csgrt_spawn #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .USER_WIDTH(CB), .SHADOWS(SHADOWS),
-                          .REFLECTION(REFLECTION), .REFRACTION(REFRACTION), .II(SHADE_II)) u_spawn (
+                          .REFLECTION(REFLECTION), .REFRACTION(REFRACTION), .II(SHARE_II)) u_spawn (
                 .clk_i, .rst_ni, .light_pos_i (light_pos),
                 .s_valid_i (sp_valid), .s_ready_o (sp_ready), .s_o_i (sp_o), .s_d_i (sp_d), .s_t_i (sp_t),
                 .s_coef_i (sp_coef), .s_ior_from_i (sp_ior_from), .s_ior_to_i (sp_ior_to), .s_lights_i (sp_lights),
@@ -540,7 +541,7 @@ module csgrt_top #(
             wire unused_ch = ^{ch_in_range, sr_y, hit_entering, l_mat_q, cam_last};
 
             csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE),
-                          .LINEAR_OUT(1), .EXT_LIGHT(1), .SPECULAR(SPECULAR), .II(SHADE_II)) u_shade (
+                          .LINEAR_OUT(1), .EXT_LIGHT(1), .SPECULAR(SPECULAR), .II(SHARE_II)) u_shade (
                 .clk_i, .rst_ni,
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_pos_i (light_pos),
                 .light_color_i (light_col), .background_i (background),

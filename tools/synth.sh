@@ -4,7 +4,7 @@
 #
 #   tools/synth.sh [--bits 24] [--freq 100] [--baud 3000000] [--out out/synth]
 #                  [--tree-height 8] [--max-leaves 64] [--effects none|all|shadows,reflection,refraction]
-#                  [--no-specular] [--sort-inserts 1|2] [--shade-ii 3|1] [--units 1]
+#                  [--no-specular] [--sort-inserts 1|2] [--share-ii 3|1] [--units 1]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--router router1|router2]
 #
@@ -36,7 +36,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
-EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHADE_II=3 UNITS=1 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
+EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
@@ -47,7 +47,7 @@ while [ $# -gt 0 ]; do
         --effects) EFFECTS=$2; shift 2 ;;          # csgrt_top's effect units (SHADOWS, REFLECTION, REFRACTION)
         --no-specular) SPECULAR=0; shift ;;       # csgrt_top's SPECULAR = 0: no phong highlights
         --sort-inserts) SORT_INSERTS=$2; shift 2 ;;   # csgrt_top's SORT_INSERTS (the event sorter's insertions per clock)
-        --shade-ii) SHADE_II=$2; shift 2 ;;       # csgrt_top's SHADE_II (the shading's and ray tree's clocks per item)
+        --share-ii) SHARE_II=$2; shift 2 ;;       # csgrt_top's SHARE_II (the shading's and ray tree's clocks per item)
         --units) UNITS=$2; shift 2 ;;             # csgrt_top's NUM_UNITS (intersection lanes)
         --per-module) PER_MODULE=1; shift ;;
         --behavioural-mul) DEFS="-DSYNTHESIS"; shift ;;
@@ -74,7 +74,7 @@ for fx in ${EFFECTS//,/ }; do
 done
 [ "$SPECULAR" = 1 ] || EFFECTS="$EFFECTS,nospecular"   # the label in the summary and report.json
 case "$SORT_INSERTS" in 1) ;; 2) EFFECTS="$EFFECTS,sort2" ;; *) echo "synth.sh: --sort-inserts takes 1 or 2" >&2; exit 1 ;; esac
-case "$SHADE_II" in 3) ;; 1) EFFECTS="$EFFECTS,shade1" ;; *) echo "synth.sh: --shade-ii takes 3 or 1" >&2; exit 1 ;; esac
+case "$SHARE_II" in 3) ;; 1) EFFECTS="$EFFECTS,share1" ;; *) echo "synth.sh: --share-ii takes 3 or 1" >&2; exit 1 ;; esac
 case "$UNITS" in 1) ;; [2-9]) EFFECTS="$EFFECTS,units$UNITS" ;; *) echo "synth.sh: --units takes 1 to 9" >&2; exit 1 ;; esac
 mkdir -p "$OUT"
 
@@ -110,7 +110,7 @@ LPF
 # SYNTH_CORE_SRC: other core sources (a test hook: a stub csgrt_top checks the flow in a minute)
 SRC="${SYNTH_CORE_SRC:-$(echo rtl/*.v)} rtl/board/csgrt_uart_rx.v rtl/board/csgrt_uart_tx.v rtl/board/csgrt_board_ctrl.v rtl/board/ulx3s/csgrt_ulx3s.v"
 T0=$(date +%s)
-PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHADE_II $SHADE_II -set NUM_UNITS $UNITS
+PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS
         -set CLK_HZ $CLK_HZ -set PLL_CLKI_DIV $CLKI_DIV -set PLL_CLKFB_DIV $CLKFB_DIV
         -set PLL_CLKOP_DIV $CLKOP_DIV -set PLL_CLKOP_CPHASE $CLKOP_CPHASE -set UART_DIV $UART_DIV"
 PARAMS=$(echo $PARAMS)   # one line for yosys

@@ -1,6 +1,7 @@
 `default_nettype none
 // tb_camera — Verilator top for tb_camera.cpp: csgrt_camera at BITS 12, 16,
 // 24 and 32, one clock each so that only the instance under test is evaluated.
+// BITS 16 is time-shared (II = 3: a ray every third clock), the others not.
 module tb_camera (
     input  wire              b12_clk_i,
     input  wire              b12_rst_ni,
@@ -84,7 +85,7 @@ module tb_camera (
         .m_valid_o(b12_valid_o), .m_ready_i(b12_ready_i), .m_x_o(b12_x_o), .m_y_o(b12_y_o),
         .m_o_o(b12_o_o), .m_d_o(b12_d_o), .m_last_o(b12_last_o));
 
-    csgrt_camera #(.BITS(16)) u_b16 (
+    csgrt_camera #(.BITS(16), .II(3)) u_b16 (
         .clk_i(b16_clk_i), .rst_ni(b16_rst_ni),
         .origin_i(b16_origin_i), .base_i(b16_base_i), .dx_i(b16_dx_i), .dy_i(b16_dy_i),
         .width_i(b16_width_i), .height_i(b16_height_i), .start_i(b16_start_i),

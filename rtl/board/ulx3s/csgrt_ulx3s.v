@@ -21,7 +21,7 @@ module csgrt_ulx3s #(
     parameter REFRACTION    = 0,
     parameter SPECULAR      = 1,          // phong highlights (make synth SPECULAR=0: none)
     parameter SORT_INSERTS  = 1,          // the event sorter's insertions per clock (synth.sh --sort-inserts)
-    parameter SHADE_II      = 3,          // the shading's clocks per item, 3 or 1 (synth.sh --shade-ii)
+    parameter SHARE_II      = 3,          // the shading's clocks per item, 3 or 1 (synth.sh --share-ii)
     parameter NUM_UNITS     = 1,          // intersection lanes (synth.sh --units)
     /* verilator lint_off UNUSEDPARAM */
     parameter CLK_HZ        = 100000000,  // core clock the PLL makes (documentation, idle time)
@@ -91,7 +91,7 @@ module csgrt_ulx3s #(
     csgrt_board_ctrl #(
         .BITS (BITS), .MAX_LEAVES (MAX_LEAVES), .TREE_HEIGHT (TREE_HEIGHT),
         .SHADOWS (SHADOWS), .REFLECTION (REFLECTION), .REFRACTION (REFRACTION), .SPECULAR (SPECULAR),
-        .SORT_INSERTS (SORT_INSERTS), .SHADE_II (SHADE_II), .NUM_UNITS (NUM_UNITS),
+        .SORT_INSERTS (SORT_INSERTS), .SHARE_II (SHARE_II), .NUM_UNITS (NUM_UNITS),
         .IDLE_CLOCKS (IDLE_CLOCKS), .LUT_FILE (LUT_FILE)
     ) u_ctrl (
         .clk_i (clk), .rst_ni (rst_n),
