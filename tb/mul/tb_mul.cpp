@@ -8,6 +8,7 @@
 // their neighbours, every chunk boundary of the tiling at 18k bits) crossed
 // with each other, then random values of random length.
 #include "Vtb_mul.h"
+#include "bits.h"
 #include "stream.h"
 
 #include <gtest/gtest.h>
@@ -29,24 +30,8 @@ constexpr Widths kWidths[] = {{18, 18}, {24, 24}, {21, 21}, {17, 25}, {32, 32}, 
                               {36, 36}, {37, 5},  {2, 2},   {29, 29}, {16, 19}, {12, 12}, {34, 34}};
 constexpr int kN = sizeof(kWidths) / sizeof(kWidths[0]);
 
-// bits [lo, lo+w) of a Verilator wide port
-template <class W>
-void put_bits(W& port, int lo, int w, uint64_t v) {
-    for (int i = 0; i < w; ++i) {
-        const int b = lo + i;
-        const uint32_t m = 1u << (b % 32);
-        if ((v >> i) & 1) port[b / 32] |= m;
-        else port[b / 32] &= ~m;
-    }
-}
-template <class W>
-i128 get_signed(const W& port, int lo, int w) {
-    i128 v = 0;
-    for (int i = 0; i < w; ++i)
-        if ((port[(lo + i) / 32] >> ((lo + i) % 32)) & 1) v |= i128(1) << i;
-    if ((v >> (w - 1)) & 1) v -= i128(1) << w;   // sign
-    return v;
-}
+using tb::get_signed;
+using tb::put_bits;
 
 int64_t wrap(int64_t v, int w) {   // v as a w-bit two's complement number
     const uint64_t m = (w >= 64) ? ~0ull : ((1ull << w) - 1);

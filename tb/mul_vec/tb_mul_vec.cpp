@@ -6,6 +6,7 @@
 // new ones at every advance of an instance's beat, and a random clock
 // enable (the pipelines' stall) that also holds the beat's phase.
 #include "Vtb_mul_vec.h"
+#include "bits.h"
 #include "stream.h"
 
 #include <gtest/gtest.h>
@@ -27,23 +28,9 @@ struct Inst { int a, b, n, ii; };
 constexpr Inst kInst[] = {{24, 21, 3, 3}, {17, 18, 2, 3}, {18, 18, 1, 3}, {24, 21, 3, 1}};
 constexpr int kN = 4;
 
-template <class W>
-void put_bits(W& port, int lo, int w, uint64_t v) {
-    for (int i = 0; i < w; ++i) {
-        const int b = lo + i;
-        const uint32_t m = 1u << (b % 32);
-        if ((v >> i) & 1) port[b / 32] |= m;
-        else port[b / 32] &= ~m;
-    }
-}
-template <class W>
-int64_t get_signed(const W& port, int lo, int w) {
-    uint64_t v = 0;
-    for (int i = 0; i < w; ++i)
-        if ((port[(lo + i) / 32] >> ((lo + i) % 32)) & 1) v |= uint64_t(1) << i;
-    if (w < 64 && ((v >> (w - 1)) & 1)) v |= ~uint64_t(0) << w;
-    return int64_t(v);
-}
+using tb::get_signed;
+using tb::put_bits;
+
 int64_t random_signed(std::mt19937_64& rng, int w) {
     const int len = 1 + int(rng() % uint64_t(w));   // random length: small and large values
     int64_t v = int64_t(rng() & ((uint64_t(1) << len) - 1));
@@ -93,7 +80,7 @@ Result run(double ce_prob, uint64_t clocks, uint64_t seed) {
             const Pairs& p = beats[k].front();
             for (int j = 0; j < kInst[k].n; ++j) {
                 const int64_t want = p.a[j] * p.b[j];
-                const int64_t got = get_signed(t->p_o, (3 * k + j) * 2 * kMaxW, 2 * kMaxW);
+                const int64_t got = int64_t(get_signed(t->p_o, (3 * k + j) * 2 * kMaxW, 2 * kMaxW));
                 ++r.checked;
                 if (got != want) {
                     if (!r.mismatches)
