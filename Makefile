@@ -106,8 +106,8 @@ endef
 # model likewise), so that both shading configurations are co-simulated
 # without a build of their own; frame24u2 is also the one whose event
 # sorters insert two events per clock (SORT_INSERTS=2; the others: 1), and
-# the two-lane builds shade and run the ray tree's arithmetic at a pixel or
-# item per clock (SHARE_II=1; the others: 3, the time-shared default)
+# the two-lane builds run the time-shared blocks (camera, shading, ray tree
+# arithmetic, spawn children) at an item per clock (SHARE_II=1; the others: 3)
 FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 $(BUILD)/tb/frame24u2 \
               $(BUILD)/tb/frame16fx $(BUILD)/tb/frame24fx $(BUILD)/tb/frame16fxu2
 FRAME_DEPS := $(RTL_SRC) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a

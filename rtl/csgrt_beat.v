@@ -4,7 +4,9 @@
 // operand pairs in turn (csgrt_mul_vec); II = 1 is the ordinary pipeline.
 //
 // phase_o counts the running clocks of a beat, 0, 1, 2 (II = 3; always 0
-// for II = 1), and only moves when ce_i is high; adv_o is the beat's last
+// for II = 1), and only moves when ce_i is high; last_o marks the beat's
+// last clock (phase 2; always for II = 1), the only one at which an item
+// may leave for a skid buffer; adv_o = ce_i && last_o is the beat's last
 // running clock, the one at which the pipeline's registers take their next
 // values (II = 1: every running clock, adv_o = ce_i).
 // Example, II = 3, ce_i high throughout: phase_o 0 1 2 0 1 2 ...,
@@ -17,6 +19,7 @@ module csgrt_beat #(
     input  wire       rst_ni,    // synchronous, active low: phase 0
     input  wire       ce_i,      // the pipeline runs (low = stall)
     output wire [1:0] phase_o,
+    output wire       last_o,
     output wire       adv_o
 );
 
@@ -24,6 +27,7 @@ module csgrt_beat #(
         if (II == 1) begin : g_every
             wire unused_clk = ^{clk_i, rst_ni};   // no state
             assign phase_o = 2'd0;
+            assign last_o  = 1'b1;
             assign adv_o   = ce_i;
         end else begin : g_three
             reg [1:0] phase_q;
@@ -32,7 +36,8 @@ module csgrt_beat #(
                 else if (ce_i) phase_q <= (phase_q == 2'd2) ? 2'd0 : phase_q + 2'd1;
             end
             assign phase_o = phase_q;
-            assign adv_o   = ce_i && (phase_q == 2'd2);
+            assign last_o  = (phase_q == 2'd2);
+            assign adv_o   = ce_i && last_o;
         end
 
         if (II != 1 && II != 3) begin : g_bad_param

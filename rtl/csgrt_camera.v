@@ -73,8 +73,8 @@ module csgrt_camera #(
     wire       en;    // the pipeline runs: the output skid's ready
     wire [1:0] ph;
     wire       adv;   // the beat's advance: every register moves on it
-    csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .phase_o(ph), .adv_o(adv));
-    wire last = (II == 1) || (ph == 2'd2);
+    wire       last;  // the beat's last clock: an item leaves for the output skid only then
+    csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .phase_o(ph), .last_o(last), .adv_o(adv));
 
     // ---- generator -----------------------------------------------------------
     reg [3*CW-1:0] dx_q, dy_q;   // component k at k*CW

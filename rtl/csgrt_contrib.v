@@ -47,25 +47,18 @@ module csgrt_contrib #(
     wire       en;    // the pipeline runs: the output skid's ready
     wire [1:0] ph;
     wire       adv;   // the beat's advance: every register but the multipliers' moves on it
-    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .phase_o(ph), .adv_o(adv));
-    wire last = (II == 1) || (ph == 2'd2);
+    wire       last;  // the beat's last clock: an item leaves for the output skid only then
+    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .phase_o(ph), .last_o(last), .adv_o(adv));
     assign s_ready_o = adv;
 
     // ---- input: registered for II = 3 (steady for the shared multiplier's beat) ----
     localparam IW = TAG_W + 6 * COL_W + 1 + 16 + 48;
     wire          i_valid;
     wire [IW-1:0] i_rec;
-    generate
-        if (II == 1) begin : g_in_direct
-            assign i_valid = s_valid_i;
-            assign i_rec   = {s_w_i, s_filter_i, s_transmits_i, s_spec_i, s_local_i, s_tag_i};
-        end else begin : g_in_reg
-            csgrt_delay #(.WIDTH(IW), .STAGES(1)) u_in (
-                .clk_i, .rst_ni, .ce_i(adv), .valid_i(s_valid_i),
-                .data_i({s_w_i, s_filter_i, s_transmits_i, s_spec_i, s_local_i, s_tag_i}),
-                .valid_o(i_valid), .data_o(i_rec));
-        end
-    endgenerate
+    csgrt_delay #(.WIDTH(IW), .STAGES(II == 1 ? 0 : 1)) u_in (
+        .clk_i, .rst_ni, .ce_i(adv), .valid_i(s_valid_i),
+        .data_i({s_w_i, s_filter_i, s_transmits_i, s_spec_i, s_local_i, s_tag_i}),
+        .valid_o(i_valid), .data_o(i_rec));
     wire [TAG_W-1:0]   i_tag    = i_rec[0 +: TAG_W];
     wire [3*COL_W-1:0] i_local  = i_rec[TAG_W +: 3*COL_W];
     wire [3*COL_W-1:0] i_spec   = i_rec[TAG_W + 3*COL_W +: 3*COL_W];

@@ -94,8 +94,8 @@ module csgrt_hit_prep #(
     wire       en;    // the pipeline runs: the output skid's ready
     wire [1:0] ph;
     wire       adv;   // the beat's advance: every register but the multipliers' moves on it
-    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .phase_o(ph), .adv_o(adv));
-    wire last = (II == 1) || (ph == 2'd2);
+    wire       last;  // the beat's last clock: an item leaves for the output skid only then
+    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .phase_o(ph), .last_o(last), .adv_o(adv));
     wire fifo_ready;
     assign s_ready_o = adv && fifo_ready;
     wire take = s_valid_i && s_ready_o;
@@ -112,16 +112,9 @@ module csgrt_hit_prep #(
                             s_opaque, s_to_air_i, s_hit_i, s_shadow_i};
     wire          i_valid;
     wire [IW-1:0] i_word;
-    generate
-        if (II == 1) begin : g_in_direct
-            assign i_valid = take;
-            assign i_word  = s_word;
-        end else begin : g_in_reg
-            csgrt_delay #(.WIDTH(IW), .STAGES(1)) u_in (
-                .clk_i, .rst_ni, .ce_i(adv), .valid_i(take), .data_i(s_word),
-                .valid_o(i_valid), .data_o(i_word));
-        end
-    endgenerate
+    csgrt_delay #(.WIDTH(IW), .STAGES(II == 1 ? 0 : 1)) u_in (
+        .clk_i, .rst_ni, .ce_i(adv), .valid_i(take), .data_i(s_word),
+        .valid_o(i_valid), .data_o(i_word));
     wire [XW-1:0]  i_x          = i_word[0 +: XW];
     wire [TW-1:0]  i_t          = i_x[4 + 3*B + 96 + KW + 5 +: TW];
     wire [47:0]    i_w          = i_x[4 + 3*B +: 48];

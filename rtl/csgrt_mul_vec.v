@@ -10,8 +10,9 @@
 // clock); its product comes out two clocks later and is caught in a hold
 // register: pair 0 at phase 2 of the same beat, pair 1 at phase 0 and pair 2
 // at phase 1 of the next. The next beat's advance copies the held products
-// to p_o, which then holds them for the whole beat after. Timeline, beat k
-// with pairs x0..x2, beat k+1 with y0..y2 (each column one clock):
+// to p_o, which then holds them for the whole beat after (csgrt_beat_gather).
+// Timeline, beat k with pairs x0..x2, beat k+1 with y0..y2 (each column one
+// clock):
 //   beat         k          | k+1        | k+2
 //   phase        0   1   2  | 0   1   2  | 0 1 2
 //   mul input    x0  x1  x2 | y0  y1  y2 |
@@ -80,19 +81,9 @@ module csgrt_mul_vec #(
             csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH)) u_mul (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
                 .a_i(a_sel), .b_i(b_sel), .valid_o(unused_v), .p_o(prod));
-            // hold register k catches pair k's product (k + 2) mod 3 phases on
-            wire [N*PW-1:0] held;
-            reg  [N*PW-1:0] p_q;
-            for (k = 0; k < N; k = k + 1) begin : g_hold
-                localparam [1:0] CATCH = (k + 2) % 3;
-                reg [PW-1:0] hold_q;
-                always @(posedge clk_i)
-                    if (ce_i && phase_i == CATCH) hold_q <= prod;
-                assign held[k*PW +: PW] = hold_q;
-            end
-            always @(posedge clk_i)
-                if (ce_i && phase_i == 2'd2) p_q <= held;
-            assign p_o = p_q;
+            // pair k's product comes out two clocks after phase k: gathered
+            csgrt_beat_gather #(.WIDTH(PW), .N(N)) u_gather (
+                .clk_i(clk_i), .ce_i(ce_i), .phase_i(phase_i), .d_i(prod), .q_o(p_o));
         end
 
         if (A_WIDTH < 2 || B_WIDTH < 2 || N < 1 || N > 3 || (II != 1 && II != 3)) begin : g_bad_param

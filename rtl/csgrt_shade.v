@@ -174,10 +174,11 @@ module csgrt_shade #(
     // only at an advance.
     wire [1:0] ph_a, ph_b;
     wire       adv_a, adv_b;
-    csgrt_beat #(.II(II)) u_beat_a (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_o(ph_a), .adv_o(adv_a));
-    csgrt_beat #(.II(II)) u_beat_b (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_o(ph_b), .adv_o(adv_b));
-    wire last_a = (II == 1) || (ph_a == 2'd2);   // a beat's last clock
-    wire last_b = (II == 1) || (ph_b == 2'd2);
+    wire       last_a, last_b;   // a beat's last clock
+    csgrt_beat #(.II(II)) u_beat_a (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_o(ph_a), .last_o(last_a),
+                                    .adv_o(adv_a));
+    csgrt_beat #(.II(II)) u_beat_b (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_o(ph_b), .last_o(last_b),
+                                    .adv_o(adv_b));
     assign s_ready_o = adv_a;
 
     genvar i, j;
@@ -193,28 +194,9 @@ module csgrt_shade #(
     wire           in_valid;
     wire [A0W-1:0] in_side;   // {pix, coef (9), d, o}
     wire [TW-1:0]  in_t;
-    generate
-        if (II == 1) begin : g_in_direct
-            assign in_valid = s_valid_i;
-            assign in_side  = {s_pix, s_coef_i[0 +: 9*B], s_d_i, s_o_i};
-            assign in_t     = s_t_i;
-        end else begin : g_in_reg
-            reg           in_valid_q;
-            reg [A0W-1:0] in_side_q;
-            reg [TW-1:0]  in_t_q;
-            always @(posedge clk_i) begin
-                if (!rst_ni) in_valid_q <= 1'b0;
-                else if (adv_a) in_valid_q <= s_valid_i;
-                if (adv_a) begin
-                    in_side_q <= {s_pix, s_coef_i[0 +: 9*B], s_d_i, s_o_i};
-                    in_t_q    <= s_t_i;
-                end
-            end
-            assign in_valid = in_valid_q;
-            assign in_side  = in_side_q;
-            assign in_t     = in_t_q;
-        end
-    endgenerate
+    csgrt_delay #(.WIDTH(A0W + TW), .STAGES(II == 1 ? 0 : 1)) u_in (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .valid_i(s_valid_i),
+        .data_i({s_pix, s_coef_i[0 +: 9*B], s_d_i, s_o_i, s_t_i}), .valid_o(in_valid), .data_o({in_side, in_t}));
 
     // ---- A0: t d_i ---------------------------------------------------------
     wire [3*(TW+B)-1:0] td;

@@ -843,8 +843,9 @@ module csgrt_spawn #(
     // running clock; a child is issued and leaves only at an advance
     wire [1:0] ph_c;
     wire       adv_c;
-    csgrt_beat #(.II(II)) u_beat_c (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_o(ph_c), .adv_o(adv_c));
-    wire last_c = (II == 1) || (ph_c == 2'd2);
+    wire       last_c;
+    csgrt_beat #(.II(II)) u_beat_c (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_o(ph_c), .last_o(last_c),
+                                    .adv_o(adv_c));
 
     // ---- SEQ: the current hit and its pending children ------------------------------
     reg             cur_valid_q;

@@ -23,8 +23,8 @@
 // beat's advance (ce_i at phase_i 2), so the latency is counted in beats
 // and the throughput is a vector per beat; the three squares share one
 // multiplier (csgrt_mul_vec), and the three divisions one csgrt_div_core
-// running on every clock, fed axis k at phase k, its quotients caught as
-// they come out exactly as csgrt_mul_vec catches products (the divider's
+// running on every clock, fed axis k at phase k, its quotients gathered
+// as csgrt_mul_vec gathers products (csgrt_beat_gather; the divider's
 // FRAC+2 clocks padded by 0 to 2 registers to 2 mod 3: D takes
 // (FRAC+2+pad+4)/3 beats, 7 for FRAC 15). Multipliers: 1; dividers: 1.
 // Users: csgrt_shade_unit (shading, FRAC 15, 17 stages), csgrt_spawn
@@ -165,19 +165,13 @@ module csgrt_unit #(
                     end
                 assign padded = pad_q[PAD-1];
             end
-            wire [3*(QB+1)-1:0] held;
-            reg  [3*(QB+1)-1:0] d_q;
-            for (i = 0; i < 3; i = i + 1) begin : g_hold
-                localparam [1:0] CATCH = (i + 2) % 3;
-                reg [QB:0] hold_q;
-                always @(posedge clk_i)
-                    if (ce_i && phase_i == CATCH) hold_q <= padded;
-                assign held[i*(QB+1) +: QB+1] = hold_q;
-                assign d_mag[i*QB +: QB] = d_q[i*(QB+1) +: QB];
-                assign d_neg[i]          = d_q[i*(QB+1) + QB];
+            wire [3*(QB+1)-1:0] gathered;
+            csgrt_beat_gather #(.WIDTH(QB + 1), .N(3)) u_gather (
+                .clk_i(clk_i), .ce_i(ce_i), .phase_i(phase_i), .d_i(padded), .q_o(gathered));
+            for (i = 0; i < 3; i = i + 1) begin : g_quot
+                assign d_mag[i*QB +: QB] = gathered[i*(QB+1) +: QB];
+                assign d_neg[i]          = gathered[i*(QB+1) + QB];
             end
-            always @(posedge clk_i)
-                if (adv) d_q <= held;
             assign d_ovf = 3'b000;
             // the valid bit and the sideband: DB beats (DB - 1 of them in the
             // ring buffer, the last in d_q's place)

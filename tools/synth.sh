@@ -47,7 +47,7 @@ while [ $# -gt 0 ]; do
         --effects) EFFECTS=$2; shift 2 ;;          # csgrt_top's effect units (SHADOWS, REFLECTION, REFRACTION)
         --no-specular) SPECULAR=0; shift ;;       # csgrt_top's SPECULAR = 0: no phong highlights
         --sort-inserts) SORT_INSERTS=$2; shift 2 ;;   # csgrt_top's SORT_INSERTS (the event sorter's insertions per clock)
-        --share-ii) SHARE_II=$2; shift 2 ;;       # csgrt_top's SHARE_II (the shading's and ray tree's clocks per item)
+        --share-ii) SHARE_II=$2; shift 2 ;;       # csgrt_top's SHARE_II (clocks per item of the time-shared blocks)
         --units) UNITS=$2; shift 2 ;;             # csgrt_top's NUM_UNITS (intersection lanes)
         --per-module) PER_MODULE=1; shift ;;
         --behavioural-mul) DEFS="-DSYNTHESIS"; shift ;;

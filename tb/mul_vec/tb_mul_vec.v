@@ -18,8 +18,9 @@ module tb_mul_vec #(
     output wire [4*3*2*MAXW-1:0] p_o     // instance k, product j at (3k+j)*2*MAXW
 );
     wire [1:0] phase1;
-    csgrt_beat #(.II(3)) u_beat3 (.clk_i, .rst_ni, .ce_i, .phase_o(phase3_o), .adv_o(adv3_o));
-    csgrt_beat #(.II(1)) u_beat1 (.clk_i, .rst_ni, .ce_i, .phase_o(phase1), .adv_o(adv1_o));
+    wire       unused_last3, unused_last1;
+    csgrt_beat #(.II(3)) u_beat3 (.clk_i, .rst_ni, .ce_i, .phase_o(phase3_o), .last_o(unused_last3), .adv_o(adv3_o));
+    csgrt_beat #(.II(1)) u_beat1 (.clk_i, .rst_ni, .ce_i, .phase_o(phase1), .last_o(unused_last1), .adv_o(adv1_o));
 
     // instance k: {A width, B width, N, II}
     function automatic integer wa(input integer k);
