@@ -18,9 +18,18 @@
 // Output: class_o {kind, from, to} as csgrt_class_node (kind 0 OUT, 1 IN,
 // 2 BORDER), with valid_o and tag_o.
 //
-// Pipeline: the slot classes (level 0) are built combinationally from the
-// inputs and combined by the first node level in the same clock; then one
-// registered stage per node level. Latency: TREE_HEIGHT clocks (counted in
+// Evaluated along one path: an event makes one slot BORDER, so only the H
+// nodes between that slot and the root can see a BORDER; every other
+// subtree is IN m or OUT (1 + MAT_BITS bits, a two-way choice per node,
+// instead of the full table on 2 + 2*MAT_BITS bits). The full
+// table (csgrt_class_node) runs only on the path, once per height, with the
+// path's sibling picked from that height's IN/OUT values by the slot's bits.
+// The same classification bit for bit as every node evaluated by the full
+// table (tb/class_tree), at about a fifth of the logic.
+//
+// Pipeline: the slot values and the path's BORDER are built combinationally
+// from the inputs and combined by the first height in the same clock; then
+// one registered stage per height. Latency: TREE_HEIGHT clocks (counted in
 // enabled clocks). Throughput: one event per clock.
 // Handshake: none inside; ce_i is a global stage enable (low holds every
 // stage), the walker issues events and stalls the pipeline as a whole.
@@ -52,50 +61,96 @@ module csgrt_class_tree #(
     localparam NS = 1 << H;          // slots
     localparam MB = MAT_BITS;
     localparam CW = 2 * MB + 2;      // classification width
+    localparam IW = 1 + MB;          // IN/OUT value {in, material} (material 0 when OUT)
+    localparam [1:0] OP_ADD = 2'd1, OP_SUB = 2'd2, OP_AND = 2'd3;
 
-    // The slot classes and the node classifications are arrays of CW-bit
-    // words, not one wide vector: Verilator then reads and writes each node
-    // as a word of its own (assembling a 2^H x CW vector from its pieces
-    // cost the simulation a quarter of its time at H = 8).
+    // A subtree that does not hold the event's slot sees no BORDER: its
+    // classification is IN m or OUT, and a node of two such children gives
+    // IN or OUT again (the rows and columns of table_add / table_sub /
+    // table_and without BORDER; csgrt_class_node gives the same on them):
+    //   ADD  r IN ? r : l        SUB  r IN ? OUT : l
+    //   AND  r IN ? l : OUT      PASS l
+    function automatic [IW-1:0] inout_combine(input [1:0] op, input [IW-1:0] l, input [IW-1:0] r);
+        case (op)
+            OP_ADD:  inout_combine = r[MB] ? r : l;
+            OP_SUB:  inout_combine = r[MB] ? {IW{1'b0}} : l;
+            OP_AND:  inout_combine = r[MB] ? l : {IW{1'b0}};
+            default: inout_combine = l;
+        endcase
+    endfunction
 
-    // level 0: the slot classes
-    wire [CW-1:0] leaf_c [0:NS-1];
-    genvar s, i;
+    // The IN/OUT values of every slot and node below the root, in heap order
+    // (arrays of IW-bit words: Verilator reads and writes each as a word of
+    // its own): slot s at NS + s, from the flags (combinational); node i at
+    // height j (H - floor(log2 i)) a register holding the event of j clocks
+    // ago, computed from its children's values of the clock before. The
+    // value of the node or slot that holds the event's slot is computed too
+    // but never read: the path below replaces it.
+    wire [IW-1:0] io_w [2:2*NS-1];
+    genvar s, i, j, k;
     generate
         for (s = 0; s < NS; s = s + 1) begin : g_slot
-            wire [MB-1:0] m = slot_mat_i[s*MB +: MB];
-            wire          hit = (slot_i == s[H-1:0]);
-            assign leaf_c[s] =
-                hit                          ? (entering_i ? {2'd2, {MB{1'b0}}, m} : {2'd2, m, {MB{1'b0}}}) :
-                (slot_used_i[s] && flags_i[s]) ? {2'd1, {MB{1'b0}}, m} :
-                                               {CW{1'b0}};
+            assign io_w[NS + s] = (slot_used_i[s] && flags_i[s]) ? {1'b1, slot_mat_i[s*MB +: MB]} : {IW{1'b0}};
+        end
+        for (i = 2; i < NS; i = i + 1) begin : g_node
+            // (One register per generate block rather than an array written
+            // element by element: the Verilator model writes each as a
+            // variable of its own, without a delayed-assignment flag.)
+            reg [IW-1:0] io_q;
+            always @(posedge clk_i)
+                if (ce_i) io_q <= inout_combine(node_op_i[2*i +: 2], io_w[2*i], io_w[2*i+1]);
+            assign io_w[i] = io_q;
         end
     endgenerate
 
-    // node levels: node i (heap order) holds its classification in its
-    // register g_node[i].node_q, seen by its parent as node_w[i]; its
-    // children are nodes 2i, 2i+1 or, on the lowest level, the slot classes
-    // 2i-NS, 2i+1-NS. (One register per generate block rather than an
-    // array written element by element: the Verilator model writes each
-    // as a variable of its own, without a delayed-assignment flag.)
-    wire [CW-1:0] node_w [1:NS-1];
-    wire [CW-1:0] node_d [1:NS-1];
+    // The path from the event's slot to the root: the slot is BORDER 0,m
+    // (entering) or BORDER m,0; the path node at height j (1 .. H) combines
+    // the path's classification at height j-1 with its sibling's IN/OUT
+    // value (the node or slot at heap position ((NS + slot) >> (j-1)) ^ 1),
+    // on the side the slot's bit j-1 says, by the full table
+    // (csgrt_class_node), and registers it with the slot index: stage j of
+    // the pipeline, as the node levels of the whole tree were.
+    wire [CW-1:0] path_w [0:H];      // the path's classification at height j (stage j)
+    wire [H-1:0]  slot_w [0:H];      // the event's slot at stage j
+    wire [MB-1:0] slot_m = slot_mat_i[slot_i*MB +: MB];
+    assign path_w[0] = entering_i ? {2'd2, {MB{1'b0}}, slot_m} : {2'd2, slot_m, {MB{1'b0}}};
+    assign slot_w[0] = slot_i;
     generate
-        for (i = 1; i < NS; i = i + 1) begin : g_node
-            wire [CW-1:0] l, r;
-            if (2 * i >= NS) begin : g_low
-                assign l = leaf_c[2*i-NS];
-                assign r = leaf_c[2*i+1-NS];
-            end else begin : g_up
-                assign l = node_w[2*i];
-                assign r = node_w[2*i+1];
+        for (j = 1; j <= H; j = j + 1) begin : g_path
+            localparam NL = NS >> (j - 1);             // slots or nodes at height j-1
+            // height j-1 as an array of its own, indexed by the slot's upper bits
+            wire [IW-1:0] level [0:NL-1];
+            for (k = 0; k < NL; k = k + 1) begin : g_level
+                assign level[k] = io_w[NL + k];
             end
+            wire [H-j:0]  pos     = slot_w[j-1][H-1:j-1];  // the path's place on height j-1
+            localparam [H-j:0] SIBLING = 1;            // the sibling's place: pos ^ 1
+            wire [IW-1:0] sib     = level[pos ^ SIBLING];
+            wire [CW-1:0] sib_c   = {1'b0, sib[MB], {MB{1'b0}}, sib[MB-1:0]};   // IN m or OUT
+            wire          on_right = pos[0];
+            wire [1:0]    op;
+            if (j == H) begin : g_root
+                assign op = node_op_i[3:2];
+            end else begin : g_inner
+                // the operators of height j as an array, indexed by the slot's bits above j
+                wire [1:0] ops [0:(NS>>j)-1];
+                for (k = 0; k < (NS >> j); k = k + 1) begin : g_op
+                    assign ops[k] = node_op_i[2*((NS >> j) + k) +: 2];
+                end
+                assign op = ops[slot_w[j-1][H-1:j]];
+            end
+            wire [CW-1:0] c;
             csgrt_class_node #(.MAT_BITS(MB)) u_node (
-                .op_i(node_op_i[2*i +: 2]), .l_i(l), .r_i(r), .c_o(node_d[i]));
-            reg [CW-1:0] node_q;
+                .op_i(op), .l_i(on_right ? sib_c : path_w[j-1]), .r_i(on_right ? path_w[j-1] : sib_c), .c_o(c));
+            reg [CW-1:0] path_q;
+            reg [H-1:0]  slot_q;
             always @(posedge clk_i)
-                if (ce_i) node_q <= node_d[i];
-            assign node_w[i] = node_q;
+                if (ce_i) begin
+                    path_q <= c;
+                    slot_q <= slot_w[j-1];
+                end
+            assign path_w[j] = path_q;
+            assign slot_w[j] = slot_q;
         end
         if (H < 1) begin : g_bad_param
             initial begin
@@ -109,9 +164,10 @@ module csgrt_class_tree #(
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i),
         .valid_i(valid_i), .data_i(tag_i), .valid_o(valid_o), .data_o(tag_o));
 
-    assign class_o = node_w[1];
+    assign class_o = path_w[H];
 
-    wire unused_cfg = ^node_op_i[1:0];
+    // position 0 of the heap is unused; the slot index's last stage is not read
+    wire unused_cfg = ^{node_op_i[1:0], slot_w[H]};
 
 endmodule
 
