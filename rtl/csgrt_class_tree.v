@@ -25,7 +25,7 @@
 // table (csgrt_class_node) runs only on the path, once per height, with the
 // path's sibling picked from that height's IN/OUT values by the slot's bits.
 // The same classification bit for bit as every node evaluated by the full
-// table (tb/class_tree), at about a fifth of the logic.
+// table (tb/class_tree), at about a third of the logic.
 //
 // Pipeline: the slot values and the path's BORDER are built combinationally
 // from the inputs and combined by the first height in the same clock; then
