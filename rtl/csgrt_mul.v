@@ -10,8 +10,10 @@
 //    product is cut into tiles of 18-bit operand chunks (the top chunk of an
 //    operand signed, the others unsigned 18-bit), each tile one MULT18X18D
 //    with its input and output registers inside (csgrt_mul_dsp), or, when
-//    the tile is small (chunk widths' product <= LUT_TILE_MAX = 36, i.e. the
-//    6 x 6 top corner of a 24 x 24 product), shift-and-add rows in the fabric
+//    the tile is small (chunk widths' product <= LUT_TILE_MAX, by default 36,
+//    i.e. the 6 x 6 top corner of a 24 x 24 product; tools/synth.sh
+//    --lut-tile-max sets it for every instance through the define
+//    CSGRT_LUT_TILE_MAX, trading blocks for LUTs), shift-and-add rows in the fabric
 //    between the same two registers. p_o is the sum of the shifted tiles: the registered
 //    product itself for a one-tile product; for a wider one an adder after
 //    the tiles' output registers (the consumer's stage sees that adder).
@@ -25,9 +27,15 @@
 // Handshake: none of its own. valid_i is shifted alongside the operands and
 // comes out as valid_o with the product; ce_i is the stall input of the
 // enclosing pipeline (low = hold every register).
+`ifndef CSGRT_LUT_TILE_MAX
+`define CSGRT_LUT_TILE_MAX 36
+`endif
 module csgrt_mul #(
     parameter A_WIDTH = 18,   // width of signed operand a (>= 2)
-    parameter B_WIDTH = 18    // width of signed operand b (>= 2)
+    parameter B_WIDTH = 18,   // width of signed operand b (>= 2)
+    // CSGRT_ECP5_DSP: a tile whose chunk widths' product is at most this is
+    // built in the fabric (default 36: the 6 x 6 corner of a 24 x 24 product)
+    parameter LUT_TILE_MAX = `CSGRT_LUT_TILE_MAX
 ) (
     input  wire                       clk_i,
     input  wire                       rst_ni,   // synchronous, active low (valid bits only)
@@ -82,7 +90,6 @@ module csgrt_mul #(
     // sign-extended, and the tiles' sum modulo 2^P_WIDTH is the product.
     localparam NA = (A_WIDTH + 17) / 18;
     localparam NB = (B_WIDTH + 17) / 18;
-    localparam LUT_TILE_MAX = 36;   // chunk widths' product at or below (6 x 6): fabric tile
 
     wire [NA*NB*P_WIDTH-1:0] tile;   // each tile's value, extended and shifted
     genvar i, j;
@@ -169,9 +176,9 @@ module csgrt_mul #(
 `endif
 
     generate
-        if (A_WIDTH < 2 || B_WIDTH < 2) begin : g_bad_width
+        if (A_WIDTH < 2 || B_WIDTH < 2 || LUT_TILE_MAX < 0) begin : g_bad_width
             initial begin
-                $display("ERROR %m: csgrt_mul A_WIDTH and B_WIDTH must be >= 2");
+                $display("ERROR %m: csgrt_mul A_WIDTH and B_WIDTH must be >= 2, LUT_TILE_MAX >= 0");
                 $finish;
             end
         end

@@ -16,7 +16,7 @@ TB_NAMES     := sqrt div isect camera shade
 TB_NAMES     += class_node class_tree walk spawn quadric_at mul mul_vec
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 # the multiplier bench once more as the FPGA build maps csgrt_mul (MULT18X18D tiles)
-TB_BINS      += $(BUILD)/tb/mul_ecp5
+TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t81
 ECP5_MODELS  := $(wildcard tb/ecp5/*.v)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_COMMON    := $(wildcard tb/common/*.h)
@@ -61,6 +61,12 @@ $(BUILD)/tb/mul_ecp5: tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_COMMON) $
 	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP --Mdir $(BUILD)/tb/mul_ecp5.obj --top-module tb_mul \
 	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
 	    -o $(CURDIR)/$(BUILD)/tb/mul_ecp5 $(CURDIR)/tb/mul/tb_mul.v $(CURDIR)/tb/mul/tb_mul.cpp
+# and with the larger fabric tiles of tools/synth.sh --lut-tile-max 81
+$(BUILD)/tb/mul_ecp5_t81: tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_COMMON) $(ECP5_MODELS)
+	@mkdir -p $(BUILD)/tb/mul_ecp5_t81.obj
+	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP -DCSGRT_LUT_TILE_MAX=81 --Mdir $(BUILD)/tb/mul_ecp5_t81.obj \
+	    --top-module tb_mul -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
+	    -o $(CURDIR)/$(BUILD)/tb/mul_ecp5_t81 $(CURDIR)/tb/mul/tb_mul.v $(CURDIR)/tb/mul/tb_mul.cpp
 
 .PHONY: tb lint-rtl
 tb: $(TB_BINS)

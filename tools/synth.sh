@@ -6,12 +6,16 @@
 #                  [--tree-height 8] [--max-leaves 64] [--effects none|all|shadows,reflection,refraction]
 #                  [--no-specular] [--sort-inserts 1|2] [--share-ii 3|1] [--units 1]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
-#                  [--behavioural-mul] [--router router1|router2]
+#                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2]
 #
 # Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
 # with their input and output registers inside the block (rtl/csgrt_mul.v);
 # --behavioural-mul leaves the `*` to yosys's mul2dsp instead (registers in
-# the fabric), for comparison.
+# the fabric), for comparison. --lut-tile-max N builds every tile whose
+# chunk widths' product is at most N in the fabric instead of a block
+# (default 36, the 6 x 6 corner of a 24 x 24 product; 81 also takes the
+# 6 x 8, 6 x 9, 6 x 12, 4 x 18, 7 x 7, 8 x 8, 9 x 9 and 17 x 4 tiles of BITS 24
+# off the blocks, for about 300 LUT4 each: docs/fpga.md "Multipliers").
 #
 # --per-module: area only, no place and route: synth_ecp5 -noflatten and a
 # table of LUT4 / FF / MULT18X18D / BRAM per module instance
@@ -37,6 +41,7 @@ ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
 EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
+LUT_TILE_MAX=36
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
@@ -51,6 +56,7 @@ while [ $# -gt 0 ]; do
         --units) UNITS=$2; shift 2 ;;             # csgrt_top's NUM_UNITS (intersection lanes)
         --per-module) PER_MODULE=1; shift ;;
         --behavioural-mul) DEFS="-DSYNTHESIS"; shift ;;
+        --lut-tile-max) LUT_TILE_MAX=$2; shift 2 ;;   # csgrt_mul's LUT_TILE_MAX (fabric tiles up to this product of chunk widths)
         --out) OUT=$2; shift 2 ;;
         --allow-timing-fail) ALLOW_FAIL=1; shift ;;
         --stop-after-synth) STOP_SYNTH=1; shift ;;
@@ -76,6 +82,11 @@ done
 case "$SORT_INSERTS" in 1) ;; 2) EFFECTS="$EFFECTS,sort2" ;; *) echo "synth.sh: --sort-inserts takes 1 or 2" >&2; exit 1 ;; esac
 case "$SHARE_II" in 3) ;; 1) EFFECTS="$EFFECTS,share1" ;; *) echo "synth.sh: --share-ii takes 3 or 1" >&2; exit 1 ;; esac
 case "$UNITS" in 1) ;; [2-9]) EFFECTS="$EFFECTS,units$UNITS" ;; *) echo "synth.sh: --units takes 1 to 9" >&2; exit 1 ;; esac
+case "$LUT_TILE_MAX" in
+    36) ;;
+    *[!0-9]*|'') echo "synth.sh: --lut-tile-max takes a number of bits squared (36, 81, ...)" >&2; exit 1 ;;
+    *) DEFS="$DEFS -DCSGRT_LUT_TILE_MAX=$LUT_TILE_MAX"; EFFECTS="$EFFECTS,tile$LUT_TILE_MAX" ;;
+esac
 mkdir -p "$OUT"
 
 # ------------------------------------------------------------------ tools

@@ -27,7 +27,10 @@ constexpr int kMaxW = 40;   // tb_mul.v MAXW
 struct Widths { int a, b; };
 // tb_mul.v width_a / width_b, instance by instance
 constexpr Widths kWidths[] = {{18, 18}, {24, 24}, {21, 21}, {17, 25}, {32, 32}, {19, 40}, {26, 24},
-                              {36, 36}, {37, 5},  {2, 2},   {29, 29}, {16, 19}, {12, 12}, {34, 34}};
+                              {36, 36}, {37, 5},  {2, 2},   {29, 29}, {16, 19}, {12, 12}, {34, 34},
+                              // BITS 24's corners that LUT_TILE_MAX 81 moves to the fabric:
+                              // 6 x 8, 9 x 9, 4 x 18 (and 6 x 6), 6 x 12
+                              {24, 26}, {27, 27}, {22, 24}, {24, 30}};
 constexpr int kN = sizeof(kWidths) / sizeof(kWidths[0]);
 
 using tb::get_signed;

@@ -7,7 +7,7 @@
 // a_i/b_i[k*MAXW +: WA(k)/WB(k)], its product p_o[k*2*MAXW +: WA(k)+WB(k)];
 // the width table is kWidths in tb_mul.cpp.
 module tb_mul #(
-    parameter N    = 14,   // instances
+    parameter N    = 18,   // instances
     parameter MAXW = 40    // operand slot width
 ) (
     input  wire              clk_i,
@@ -24,7 +24,8 @@ module tb_mul #(
             0: width_a = 18;  1: width_a = 24;  2: width_a = 21;  3: width_a = 17;
             4: width_a = 32;  5: width_a = 19;  6: width_a = 26;  7: width_a = 36;
             8: width_a = 37;  9: width_a = 2;  10: width_a = 29; 11: width_a = 16;
-           12: width_a = 12; default: width_a = 34;
+           12: width_a = 12; 13: width_a = 34; 14: width_a = 24; 15: width_a = 27;
+           16: width_a = 22; default: width_a = 24;
         endcase
     endfunction
     function automatic integer width_b(input integer k);
@@ -32,7 +33,8 @@ module tb_mul #(
             0: width_b = 18;  1: width_b = 24;  2: width_b = 21;  3: width_b = 25;
             4: width_b = 32;  5: width_b = 40;  6: width_b = 24;  7: width_b = 36;
             8: width_b = 5;   9: width_b = 2;  10: width_b = 29; 11: width_b = 19;
-           12: width_b = 12; default: width_b = 34;
+           12: width_b = 12; 13: width_b = 34; 14: width_b = 26; 15: width_b = 27;
+           16: width_b = 24; default: width_b = 30;
         endcase
     endfunction
 
