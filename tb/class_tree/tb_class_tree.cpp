@@ -82,6 +82,8 @@ Class unpack(uint32_t v) { return {Class::Kind((v >> 16) & 3), uint8_t(v >> 8), 
     };
 TREE_PORTS(8)
 TREE_PORTS(3)
+TREE_PORTS(2)
+TREE_PORTS(1)
 
 template <class W>
 void put(W& w, int lsb, int width, uint64_t v) {
@@ -208,5 +210,8 @@ int scaled(int n) { return std::max(10, int(n * tb::scale())); }
 
 TEST(ClassTree, Height8) { run<P8>(scaled(300), 200, tb::seed(81)); }
 TEST(ClassTree, Height3) { run<P3>(scaled(2000), 50, tb::seed(31)); }
+// the path's edge cases: one inner height, the root alone
+TEST(ClassTree, Height2) { run<P2>(scaled(1000), 50, tb::seed(21)); }
+TEST(ClassTree, Height1) { run<P1>(scaled(500), 50, tb::seed(11)); }
 
 }  // namespace
