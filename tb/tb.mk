@@ -56,17 +56,17 @@ $(BUILD)/tb/$(1): tb/$(1)/tb_$(1).v tb/$(1)/tb_$(1).cpp $(TB_RTL) $(TB_COMMON) $
 endef
 $(foreach t,$(TB_NAMES),$(eval $(call TB_RULE,$(t))))
 
-$(BUILD)/tb/mul_ecp5: tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_COMMON) $(ECP5_MODELS)
-	@mkdir -p $(BUILD)/tb/mul_ecp5.obj
-	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP --Mdir $(BUILD)/tb/mul_ecp5.obj --top-module tb_mul \
+# $(1): binary name, $(2): defines beyond CSGRT_ECP5_DSP
+define MUL_ECP5_RULE
+$(BUILD)/tb/$(1): tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_COMMON) $(ECP5_MODELS)
+	@mkdir -p $(BUILD)/tb/$(1).obj
+	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP $(2) --Mdir $(BUILD)/tb/$(1).obj --top-module tb_mul \
 	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
-	    -o $(CURDIR)/$(BUILD)/tb/mul_ecp5 $(CURDIR)/tb/mul/tb_mul.v $(CURDIR)/tb/mul/tb_mul.cpp
+	    -o $(CURDIR)/$(BUILD)/tb/$(1) $(CURDIR)/tb/mul/tb_mul.v $(CURDIR)/tb/mul/tb_mul.cpp
+endef
+$(eval $(call MUL_ECP5_RULE,mul_ecp5,))
 # and with the larger fabric tiles of tools/synth.sh --lut-tile-max 81
-$(BUILD)/tb/mul_ecp5_t81: tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_COMMON) $(ECP5_MODELS)
-	@mkdir -p $(BUILD)/tb/mul_ecp5_t81.obj
-	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP -DCSGRT_LUT_TILE_MAX=81 --Mdir $(BUILD)/tb/mul_ecp5_t81.obj \
-	    --top-module tb_mul -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
-	    -o $(CURDIR)/$(BUILD)/tb/mul_ecp5_t81 $(CURDIR)/tb/mul/tb_mul.v $(CURDIR)/tb/mul/tb_mul.cpp
+$(eval $(call MUL_ECP5_RULE,mul_ecp5_t81,-DCSGRT_LUT_TILE_MAX=81))
 
 .PHONY: tb lint-rtl
 tb: $(TB_BINS)

@@ -1,67 +1,46 @@
 `default_nettype none
 // tb_class_tree — Verilator top for tb_class_tree.cpp: csgrt_class_tree at
-// TREE_HEIGHT 8, 3, 2 and 1 (the path's edge cases), one clock each.
+// TREE_HEIGHT 8, 3, 2 and 1 (the path's edge cases), one clock each. Each
+// instance's ports are h<H>_<port> (TREE_PORTS in tb_class_tree.cpp).
+
+// the top's ports of the instance of height H (2^H = NS slots)
+`define TB_TREE_PORTS(H, NS) \
+    input  wire h``H``_clk_i, \
+    input  wire h``H``_rst_ni, \
+    input  wire h``H``_ce_i, \
+    input  wire [2*NS-1:0] h``H``_node_op_i, \
+    input  wire [8*NS-1:0] h``H``_slot_mat_i, \
+    input  wire [NS-1:0] h``H``_slot_used_i, \
+    input  wire h``H``_valid_i, \
+    input  wire [NS-1:0] h``H``_flags_i, \
+    input  wire [H-1:0] h``H``_slot_i, \
+    input  wire h``H``_entering_i, \
+    input  wire [15:0] h``H``_tag_i, \
+    output wire h``H``_valid_o, \
+    output wire [17:0] h``H``_class_o, \
+    output wire [15:0] h``H``_tag_o
+
+// the instance of height H on those ports
+`define TB_TREE(H) \
+    csgrt_class_tree #(.TREE_HEIGHT(H), .MAT_BITS(8), .TAG_WIDTH(16)) u_h``H ( \
+        .clk_i(h``H``_clk_i), .rst_ni(h``H``_rst_ni), .ce_i(h``H``_ce_i), \
+        .node_op_i(h``H``_node_op_i), .slot_mat_i(h``H``_slot_mat_i), .slot_used_i(h``H``_slot_used_i), \
+        .valid_i(h``H``_valid_i), .flags_i(h``H``_flags_i), .slot_i(h``H``_slot_i), \
+        .entering_i(h``H``_entering_i), .tag_i(h``H``_tag_i), \
+        .valid_o(h``H``_valid_o), .class_o(h``H``_class_o), .tag_o(h``H``_tag_o));
+
 module tb_class_tree (
-    input  wire h8_clk_i,
-    input  wire h8_rst_ni,
-    input  wire h8_ce_i,
-    input  wire [511:0] h8_node_op_i,
-    input  wire [2047:0] h8_slot_mat_i,
-    input  wire [255:0] h8_slot_used_i,
-    input  wire h8_valid_i,
-    input  wire [255:0] h8_flags_i,
-    input  wire [7:0] h8_slot_i,
-    input  wire h8_entering_i,
-    input  wire [15:0] h8_tag_i,
-    output wire h8_valid_o,
-    output wire [17:0] h8_class_o,
-    output wire [15:0] h8_tag_o,
-    input  wire h3_clk_i,
-    input  wire h3_rst_ni,
-    input  wire h3_ce_i,
-    input  wire [15:0] h3_node_op_i,
-    input  wire [63:0] h3_slot_mat_i,
-    input  wire [7:0] h3_slot_used_i,
-    input  wire h3_valid_i,
-    input  wire [7:0] h3_flags_i,
-    input  wire [2:0] h3_slot_i,
-    input  wire h3_entering_i,
-    input  wire [15:0] h3_tag_i,
-    output wire h3_valid_o,
-    output wire [17:0] h3_class_o,
-    output wire [15:0] h3_tag_o,
-    input  wire h2_clk_i,
-    input  wire h2_rst_ni,
-    input  wire h2_ce_i,
-    input  wire [7:0] h2_node_op_i,
-    input  wire [31:0] h2_slot_mat_i,
-    input  wire [3:0] h2_slot_used_i,
-    input  wire h2_valid_i,
-    input  wire [3:0] h2_flags_i,
-    input  wire [1:0] h2_slot_i,
-    input  wire h2_entering_i,
-    input  wire [15:0] h2_tag_i,
-    output wire h2_valid_o,
-    output wire [17:0] h2_class_o,
-    output wire [15:0] h2_tag_o,
-    input  wire h1_clk_i,
-    input  wire h1_rst_ni,
-    input  wire h1_ce_i,
-    input  wire [3:0] h1_node_op_i,
-    input  wire [15:0] h1_slot_mat_i,
-    input  wire [1:0] h1_slot_used_i,
-    input  wire h1_valid_i,
-    input  wire [1:0] h1_flags_i,
-    input  wire [0:0] h1_slot_i,
-    input  wire h1_entering_i,
-    input  wire [15:0] h1_tag_i,
-    output wire h1_valid_o,
-    output wire [17:0] h1_class_o,
-    output wire [15:0] h1_tag_o
+    `TB_TREE_PORTS(8, 256),
+    `TB_TREE_PORTS(3, 8),
+    `TB_TREE_PORTS(2, 4),
+    `TB_TREE_PORTS(1, 2)
 );
-    csgrt_class_tree #(.TREE_HEIGHT(8), .MAT_BITS(8), .TAG_WIDTH(16)) u_h8 (.clk_i(h8_clk_i), .rst_ni(h8_rst_ni), .ce_i(h8_ce_i), .node_op_i(h8_node_op_i), .slot_mat_i(h8_slot_mat_i), .slot_used_i(h8_slot_used_i), .valid_i(h8_valid_i), .flags_i(h8_flags_i), .slot_i(h8_slot_i), .entering_i(h8_entering_i), .tag_i(h8_tag_i), .valid_o(h8_valid_o), .class_o(h8_class_o), .tag_o(h8_tag_o));
-    csgrt_class_tree #(.TREE_HEIGHT(3), .MAT_BITS(8), .TAG_WIDTH(16)) u_h3 (.clk_i(h3_clk_i), .rst_ni(h3_rst_ni), .ce_i(h3_ce_i), .node_op_i(h3_node_op_i), .slot_mat_i(h3_slot_mat_i), .slot_used_i(h3_slot_used_i), .valid_i(h3_valid_i), .flags_i(h3_flags_i), .slot_i(h3_slot_i), .entering_i(h3_entering_i), .tag_i(h3_tag_i), .valid_o(h3_valid_o), .class_o(h3_class_o), .tag_o(h3_tag_o));
-    csgrt_class_tree #(.TREE_HEIGHT(2), .MAT_BITS(8), .TAG_WIDTH(16)) u_h2 (.clk_i(h2_clk_i), .rst_ni(h2_rst_ni), .ce_i(h2_ce_i), .node_op_i(h2_node_op_i), .slot_mat_i(h2_slot_mat_i), .slot_used_i(h2_slot_used_i), .valid_i(h2_valid_i), .flags_i(h2_flags_i), .slot_i(h2_slot_i), .entering_i(h2_entering_i), .tag_i(h2_tag_i), .valid_o(h2_valid_o), .class_o(h2_class_o), .tag_o(h2_tag_o));
-    csgrt_class_tree #(.TREE_HEIGHT(1), .MAT_BITS(8), .TAG_WIDTH(16)) u_h1 (.clk_i(h1_clk_i), .rst_ni(h1_rst_ni), .ce_i(h1_ce_i), .node_op_i(h1_node_op_i), .slot_mat_i(h1_slot_mat_i), .slot_used_i(h1_slot_used_i), .valid_i(h1_valid_i), .flags_i(h1_flags_i), .slot_i(h1_slot_i), .entering_i(h1_entering_i), .tag_i(h1_tag_i), .valid_o(h1_valid_o), .class_o(h1_class_o), .tag_o(h1_tag_o));
+    `TB_TREE(8)
+    `TB_TREE(3)
+    `TB_TREE(2)
+    `TB_TREE(1)
 endmodule
+
+`undef TB_TREE_PORTS
+`undef TB_TREE
 `default_nettype wire
