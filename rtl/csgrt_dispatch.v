@@ -114,7 +114,8 @@ module csgrt_dispatch #(
         .last_o  (cand_last)
     );
 
-    csgrt_fifo #(.WIDTH(RAY_W), .DEPTH(64)) u_ray_queue (
+    // block RAM: a ray is a few hundred bits, and LUTs are what the FPGA lacks
+    csgrt_fifo_block #(.WIDTH(RAY_W), .DEPTH(64)) u_ray_queue (
         .clk_i, .rst_ni,
         .valid_i (accept),
         .ready_o (queue_room),

@@ -297,7 +297,8 @@ module csgrt_hit_prep #(
         .clk_i, .rst_ni, .valid_i(x4_valid && last), .ready_o(en), .data_i({sc, x4_z}),
         .valid_o(out_valid), .ready_i(m_ready_i), .data_o(out_w));
     wire          rec_valid;
-    csgrt_fifo #(.WIDTH(REC_W), .DEPTH(16)) u_rec (
+    // the record is about a thousand bits wide at 24 bits: block RAM, not LUT RAM
+    csgrt_fifo_block #(.WIDTH(REC_W), .DEPTH(16)) u_rec (
         .clk_i, .rst_ni, .valid_i(take), .ready_o(fifo_ready), .data_i(s_rec_i),
         .valid_o(rec_valid), .ready_i(m_valid_o && m_ready_i), .data_o(m_rec_o));
     assign m_valid_o = out_valid && rec_valid;   // rec_valid always holds with out_valid

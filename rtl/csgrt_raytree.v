@@ -34,6 +34,8 @@
 //
 // Events, one per clock, in priority order: a contribution (shading done),
 // a spawned child, a traced ray, a stack pop, a new pixel from the camera.
+// The stack and the wide queues are block RAM (LUTs are what the FPGA lacks),
+// so a pop's entry is read the clock before its event.
 // Handshakes: valid/ready everywhere; outputs that leave the module are
 // registers or FIFO outputs.
 module csgrt_raytree #(
@@ -191,15 +193,21 @@ module csgrt_raytree #(
     reg [38:0]         acc_q   [0:P-1];
     reg [PW-1:0]       pend_q  [0:P-1];
     reg [SPW-1:0]      sp_q    [0:P-1];
-    // the colour ray's hit, kept for its children and its shading
+    // the colour ray's hit, kept for its children and its shading. The wide
+    // ones only the shading reads are block RAM, read into the shading's
+    // request registers when the request is issued (sh_issue below). A
+    // context's hit is written when its colour ray comes back, before its
+    // shading is issued, and not again until its contribution is in: a read
+    // never meets a write to the same context (no_rw_check).
     reg [47:0]         w_q     [0:P-1];
     reg [3:0]          depth_q [0:P-1];
     reg [47:0]         wr_q    [0:P-1];
-    reg [3*B-1:0]      ho_q    [0:P-1];
-    reg [3*B-1:0]      hd_q    [0:P-1];
+    (* ram_style = "block", no_rw_check *) reg [3*B-1:0]  ho_q    [0:P-1];
+    (* ram_style = "block", no_rw_check *) reg [3*B-1:0]  hd_q    [0:P-1];
     reg [TW-1:0]       ht_q    [0:P-1];
-    reg [10*B-1:0]     hcoef_q [0:P-1];
-    reg [MAT_W-1:0]    hmat_q  [0:P-1];
+    (* ram_style = "block", no_rw_check *) reg [10*B-1:0] hcoef_q [0:P-1];
+    (* ram_style = "block", no_rw_check *) reg [MAT_W-1:0] hmat_q [0:P-1];
+    reg [15:0]         hfilt_q [0:P-1];   // the material's filter, for csgrt_contrib
     reg [NS-1:0]       near_q  [0:P-1];
     reg [NS-1:0]       after_q [0:P-1];   // far side: the transmitted child's flags
     reg [47:0]         wt_q    [0:P-1];   // the transmitted child's weight
@@ -207,8 +215,14 @@ module csgrt_raytree #(
     reg [RUN_W-1:0]    run_q   [0:P-1];
     // the light colours for shading, scaled by the shadow rays
     reg [47:0]         lcol_q  [0:(P << KW)-1];
-    // the stack: {run, flags, depth, w, d, o}
+    // the stack: {run, flags, depth, w, d, o}. P * MAX_DEPTH entries of some
+    // 360 bits at 24 bits: block RAM (LUT RAM took ~360 DPR16X4 and a 4:1 read
+    // multiplexer per bit). Its read is registered, so a pop is staged
+    // (pop_entry_q below). A context's stack is written only while it waits
+    // for children and read only while it waits for a pop, never both, so a
+    // read never meets a write at the same address (no_rw_check).
     localparam SW = RUN_W + NS + 4 + 48 + 6 * B;
+    (* ram_style = "block", no_rw_check *)
     reg [SW-1:0]       stack_q [0:P*MAX_DEPTH-1];
     // the output buffer
     reg [OB-1:0]       ob_valid_q;
@@ -286,7 +300,7 @@ module csgrt_raytree #(
     csgrt_contrib #(.COL_W(COL_W), .TAG_W(CB), .II(II)) u_contrib (
         .clk_i, .rst_ni, .s_valid_i (sr_valid_i), .s_ready_o (sr_ready_o), .s_tag_i (sr_ctx),
         .s_local_i (sr_local_i), .s_spec_i (sr_spec_x), .s_transmits_i (tx_q[sr_ctx]),
-        .s_filter_i (hmat_q[sr_ctx][M_FILTER +: 16]), .s_w_i (w_q[sr_ctx]),
+        .s_filter_i (hfilt_q[sr_ctx]), .s_w_i (w_q[sr_ctx]),
         .m_valid_o (ct_valid), .m_ready_i (ct_ready), .m_tag_o (ct_ctx), .m_contrib_o (ct_contrib));
 
     // ---- the ray FIFO and the spawn request FIFO ------------------------------------------
@@ -295,7 +309,7 @@ module csgrt_raytree #(
     reg  [3*B-1:0]      rq_o, rq_d;
     reg  [INFO_W-1:0]   rq_info;
     wire                rq_room;
-    csgrt_fifo #(.WIDTH(REC_W + 6 * B + INFO_W), .DEPTH(RAY_FIFO)) u_rays (
+    csgrt_fifo_block #(.WIDTH(REC_W + 6 * B + INFO_W), .DEPTH(RAY_FIFO)) u_rays (
         .clk_i, .rst_ni, .valid_i (rq_push), .ready_o (rq_room), .data_i ({rq_info, rq_d, rq_o, rq_rec}),
         .valid_o (ray_valid_o), .ready_i (ray_ready_i), .data_o ({ray_info_o, ray_d_o, ray_o_o, ray_rec_o}));
 
@@ -304,7 +318,7 @@ module csgrt_raytree #(
     reg                 spq_push;
     reg  [SPQ_W-1:0]    spq_data;
     wire                spq_room;
-    csgrt_fifo #(.WIDTH(SPQ_W), .DEPTH(2 * P)) u_spawn_q (
+    csgrt_fifo_block #(.WIDTH(SPQ_W), .DEPTH(2 * P)) u_spawn_q (
         .clk_i, .rst_ni, .valid_i (spq_push), .ready_o (spq_room),
         .data_i (spq_data),
         .valid_o (sp_valid_o), .ready_i (sp_ready_i),
@@ -328,6 +342,14 @@ module csgrt_raytree #(
             if (pop_q[k])   begin pop_ctx  = k[CB-1:0]; pop_any  = 1'b1; end
         end
     end
+    // the staged pop: the top entry of context pop_ctx_q's stack, read from the
+    // block RAM the clock before the pop event uses it. A context waiting for
+    // a pop has nothing in flight, so its stack and pointer cannot change
+    // while its entry waits here.
+    reg           pop_staged_q;
+    reg  [CB-1:0] pop_ctx_q;
+    wire          pop_stage = pop_any && !pop_staged_q;
+    reg  [SW-1:0] pop_entry_q;
     wire [OBW:0] in_flight = next_seq_q - retire_q;
     wire room_out = (in_flight < OB[OBW:0]);
 
@@ -336,7 +358,7 @@ module csgrt_raytree #(
     wire ev_ct  = ct_valid && rq_room;
     wire ev_ch  = !ev_ct && ch_valid_i && rq_room;
     wire ev_hp  = !ev_ct && !ev_ch && hp_valid && rq_room && spq_room;
-    wire ev_pop = !ev_ct && !ev_ch && !ev_hp && pop_any && rq_room;
+    wire ev_pop = !ev_ct && !ev_ch && !ev_hp && pop_staged_q && rq_room;
     wire ev_cam = !ev_ct && !ev_ch && !ev_hp && !ev_pop && cam_valid_i && free_any && room_out && rq_room
                   && !start_i;
     assign ct_ready    = ev_ct;
@@ -370,11 +392,22 @@ module csgrt_raytree #(
     wire sh_issue = shq_any && (!sh_valid_q || sh_ready_i);
     assign sh_valid_o = sh_valid_q;
     assign sh_tag_o   = {{(12-CB){1'b0}}, sh_ctx_q};
-    assign sh_o_o     = ho_q[sh_ctx_q];
-    assign sh_d_o     = hd_q[sh_ctx_q];
+    // the block RAMs' read registers: loaded at the issue, held until taken
+    reg  [3*B-1:0]  sh_o_q, sh_d_q;
+    reg  [10*B-1:0] sh_coef_q;
+    reg  [MAT_W-1:0] sh_mat_q;
+    always @(posedge clk_i)
+        if (sh_issue) begin
+            sh_o_q    <= ho_q[shq_ctx];
+            sh_d_q    <= hd_q[shq_ctx];
+            sh_coef_q <= hcoef_q[shq_ctx];
+            sh_mat_q  <= hmat_q[shq_ctx];
+        end
+    assign sh_o_o     = sh_o_q;
+    assign sh_d_o     = sh_d_q;
     assign sh_t_o     = ht_q[sh_ctx_q];
-    assign sh_coef_o  = hcoef_q[sh_ctx_q];
-    assign sh_mat_o   = hmat_q[sh_ctx_q];
+    assign sh_coef_o  = sh_coef_q;
+    assign sh_mat_o   = sh_mat_q;
     wire [CB-1:0] lc_ctx = lc_tag_i[CB-1:0];
     wire unused_lc = ^lc_tag_i[11:CB];
     wire [KW-1:0] lc_k = lc_k_i[KW-1:0];
@@ -419,7 +452,8 @@ module csgrt_raytree #(
         end
     endfunction
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [SW-1:0] pop_entry = stack_q[stk(pop_ctx, sp_q[pop_ctx] - 1'b1)];
+    always @(posedge clk_i)
+        if (pop_stage) pop_entry_q <= stack_q[stk(pop_ctx, sp_q[pop_ctx] - 1'b1)];
 
     wire [38:0] acc_ct = add_sat(acc_q[ct_ctx], ct_contrib);
     wire [38:0] acc_hp = add_sat(acc_q[h_ctx], hp_bg);
@@ -434,7 +468,12 @@ module csgrt_raytree #(
             ob_valid_q <= {OB{1'b0}};
             next_seq_q <= {(OBW+1){1'b0}};
             sh_valid_q <= 1'b0;
+            pop_staged_q <= 1'b0;
         end else begin
+            if (pop_stage) begin
+                pop_staged_q <= 1'b1;
+                pop_ctx_q    <= pop_ctx;
+            end
             if (start_i) next_seq_q <= retire_q;
             // shading issue
             if (sh_ready_i && sh_valid_q) sh_valid_q <= 1'b0;
@@ -514,6 +553,7 @@ module csgrt_raytree #(
                         ht_q[h_ctx]    <= h_t;
                         hcoef_q[h_ctx] <= h_coef;
                         hmat_q[h_ctx]  <= h_mat;
+                        hfilt_q[h_ctx] <= h_mat[M_FILTER +: 16];
                         near_q[h_ctx]  <= h_near;
                         run_q[h_ctx]   <= h_run;
                         after_q[h_ctx] <= h_after;
@@ -547,13 +587,15 @@ module csgrt_raytree #(
             end else if (ev_pop) begin
                 // ---- the next colour ray of a context, from its stack
                 rq_push <= 1'b1;
-                rq_rec  <= rec(1'b0, pop_ctx, {KW{1'b0}}, pop_entry[6*B +: 48], pop_entry[6*B + 48 +: 4],
+                rq_rec  <= rec(1'b0, pop_ctx_q, {KW{1'b0}}, pop_entry_q[6*B +: 48], pop_entry_q[6*B + 48 +: 4],
                                48'd0, 5'd0, {DIST_W{1'b0}});
-                rq_o    <= pop_entry[0 +: 3*B];
-                rq_d    <= pop_entry[3*B +: 3*B];
-                rq_info <= info(1'b1, pop_entry[6*B + 52 +: NS], {DIST_W{1'b0}}, pop_entry[6*B + 52 + NS +: RUN_W]);
-                sp_q[pop_ctx]  <= sp_q[pop_ctx] - 1'b1;
-                pop_q[pop_ctx] <= 1'b0;
+                rq_o    <= pop_entry_q[0 +: 3*B];
+                rq_d    <= pop_entry_q[3*B +: 3*B];
+                rq_info <= info(1'b1, pop_entry_q[6*B + 52 +: NS], {DIST_W{1'b0}},
+                                pop_entry_q[6*B + 52 + NS +: RUN_W]);
+                sp_q[pop_ctx_q]  <= sp_q[pop_ctx_q] - 1'b1;
+                pop_q[pop_ctx_q] <= 1'b0;
+                pop_staged_q     <= 1'b0;
             end else if (ev_cam) begin
                 // ---- a new pixel
                 busy_q[free_ctx] <= 1'b1;

@@ -13,7 +13,7 @@ BUILD        ?= build
 VERILATOR    ?= verilator
 YOSYS        ?= yosys
 TB_NAMES     := sqrt div isect camera shade
-TB_NAMES     += class_node class_tree walk spawn quadric_at mul mul_vec
+TB_NAMES     += class_node class_tree walk spawn quadric_at mul mul_vec fifo
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 # the multiplier bench once more as the FPGA build maps csgrt_mul (MULT18X18D tiles)
 TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t81

@@ -1,0 +1,135 @@
+// tb_fifo.cpp — the queues' contracts (rtl/csgrt_fifo.v, rtl/csgrt_fifo_block.v):
+// every word comes out once, in order, under random input gaps and random
+// output back-pressure (tb::run_stream); the latency from acceptance to
+// valid_o is 1 clock for csgrt_fifo and 2 for csgrt_fifo_block; with the
+// output held off they take DEPTH and DEPTH + 1 words and then refuse; and a
+// full queue drains at one word per clock.
+#include "Vtb_fifo.h"
+#include "stream.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace {
+
+using Top = Vtb_fifo;
+constexpr int kWidth = 40;   // tb_fifo.v WIDTH
+constexpr int kDepth = 8;    // tb_fifo.v DEPTH
+constexpr uint64_t kMask = (uint64_t(1) << kWidth) - 1;
+
+struct Dut {
+    tb::StreamPorts ports;
+    uint64_t* data_i;
+    uint64_t* data_o;
+    int latency;    // clocks from acceptance to valid_o, the queue empty
+    int capacity;   // words taken with the output held off
+};
+
+Dut lut(Top* t) {
+    return {{&t->clk_i, &t->rst_ni, &t->lut_valid_i, &t->lut_ready_o, &t->lut_valid_o, &t->lut_ready_i},
+            &t->lut_data_i, &t->lut_data_o, 1, kDepth};
+}
+Dut blk(Top* t) {
+    return {{&t->clk_i, &t->rst_ni, &t->blk_valid_i, &t->blk_ready_o, &t->blk_valid_o, &t->blk_ready_i},
+            &t->blk_data_i, &t->blk_data_o, 2, kDepth + 1};
+}
+
+std::vector<uint64_t> words(size_t n, uint64_t s) {
+    std::mt19937_64 rng(s);
+    std::vector<uint64_t> w(n);
+    for (auto& x : w) x = rng() & kMask;
+    return w;
+}
+
+void tick(Top* t) {
+    t->clk_i = 1;
+    t->eval();
+    t->clk_i = 0;
+    t->eval();
+}
+void reset(Top* t) {
+    t->lut_valid_i = t->blk_valid_i = 0;
+    t->lut_ready_i = t->blk_ready_i = 0;
+    t->clk_i = 0;
+    t->rst_ni = 0;
+    t->eval();
+    for (int i = 0; i < 4; ++i) tick(t);
+    t->rst_ni = 1;
+    t->eval();
+}
+
+void stream(Dut (*pick)(Top*), const char* name) {
+    const size_t n = size_t(20000 * tb::scale()) + 100;
+    const std::vector<uint64_t> w = words(n, tb::seed(7));
+    struct Mix { double gap, stall; };
+    for (const Mix m : {Mix{0.0, 0.0}, Mix{0.5, 0.0}, Mix{0.0, 0.5}, Mix{0.3, 0.7}, Mix{0.8, 0.2}}) {
+        tb::Harness<Top> h;
+        Top* t = h.top.get();
+        const Dut d = pick(t);
+        const tb::StreamResult r = tb::run_stream(
+            t, d.ports, n, [&](size_t i) { *d.data_i = w[i]; },
+            [&](size_t i) -> std::string {
+                if ((*d.data_o & kMask) == w[i]) return "";
+                return "got " + std::to_string(*d.data_o & kMask) + ", want " + std::to_string(w[i]);
+            },
+            m.gap, m.stall, tb::seed(11));
+        std::printf("[ fifo     ] %-17s gap %.1f stall %.1f: %s\n", name, m.gap, m.stall, r.summary().c_str());
+        EXPECT_TRUE(r.ok()) << r.summary();
+        EXPECT_EQ(r.received, n);
+        // never earlier than the latency; exactly it when nothing holds the output
+        EXPECT_GE(r.min_latency, d.latency) << name;
+        if (m.stall == 0.0) EXPECT_EQ(r.max_latency, d.latency) << name;
+        if (m.gap == 0.0 && m.stall == 0.0) {
+            // no gaps, no back-pressure: a word per clock after the first
+            EXPECT_LE(r.cycles, n + d.latency + 201) << name;
+        }
+    }
+}
+
+TEST(Fifo, LutRamStreamsInOrder) { stream(lut, "csgrt_fifo"); }
+TEST(Fifo, BlockRamStreamsInOrder) { stream(blk, "csgrt_fifo_block"); }
+
+// With ready_i low the queue takes exactly its capacity, then refuses; then
+// it gives the words back in order at one per clock.
+void fill_and_drain(Dut (*pick)(Top*), const char* name) {
+    tb::Harness<Top> h;
+    Top* t = h.top.get();
+    const Dut d = pick(t);
+    reset(t);
+    const std::vector<uint64_t> w = words(64, 3);
+    int taken = 0;
+    for (int c = 0; c < 40; ++c) {
+        *d.ports.valid_i = 1;
+        *d.data_i = w[taken];
+        t->eval();
+        if (*d.ports.ready_o) ++taken;
+        tick(t);
+    }
+    *d.ports.valid_i = 0;
+    t->eval();
+    EXPECT_EQ(taken, d.capacity) << name;
+    EXPECT_FALSE(*d.ports.ready_o) << name << ": full, yet ready";
+    EXPECT_TRUE(*d.ports.valid_o) << name;
+    *d.ports.ready_i = 1;
+    int got = 0;
+    for (int c = 0; c < taken; ++c) {
+        t->eval();
+        ASSERT_TRUE(*d.ports.valid_o) << name << ": a gap while draining, word " << got;
+        EXPECT_EQ(*d.data_o & kMask, w[got]) << name << " word " << got;
+        ++got;
+        tick(t);
+    }
+    t->eval();
+    EXPECT_FALSE(*d.ports.valid_o) << name << ": a word more than was put in";
+    std::printf("[ fifo     ] %-17s took %d words with the output held off, drained them in %d clocks\n", name,
+                taken, got);
+}
+
+TEST(Fifo, LutRamCapacity) { fill_and_drain(lut, "csgrt_fifo"); }
+TEST(Fifo, BlockRamCapacity) { fill_and_drain(blk, "csgrt_fifo_block"); }
+
+}  // namespace

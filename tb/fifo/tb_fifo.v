@@ -1,0 +1,33 @@
+`default_nettype none
+// tb_fifo — Verilator top for tb_fifo.cpp: csgrt_fifo (LUT RAM, latency 1)
+// and csgrt_fifo_block (block RAM, latency 2), side by side with their own
+// handshakes, WIDTH bits wide and DEPTH entries deep.
+module tb_fifo #(
+    parameter WIDTH = 40,
+    parameter DEPTH = 8
+) (
+    input  wire             clk_i,
+    input  wire             rst_ni,
+    // csgrt_fifo
+    input  wire             lut_valid_i,
+    output wire             lut_ready_o,
+    input  wire [WIDTH-1:0] lut_data_i,
+    output wire             lut_valid_o,
+    input  wire             lut_ready_i,
+    output wire [WIDTH-1:0] lut_data_o,
+    // csgrt_fifo_block
+    input  wire             blk_valid_i,
+    output wire             blk_ready_o,
+    input  wire [WIDTH-1:0] blk_data_i,
+    output wire             blk_valid_o,
+    input  wire             blk_ready_i,
+    output wire [WIDTH-1:0] blk_data_o
+);
+    csgrt_fifo #(.WIDTH(WIDTH), .DEPTH(DEPTH)) u_lut (
+        .clk_i, .rst_ni, .valid_i(lut_valid_i), .ready_o(lut_ready_o), .data_i(lut_data_i),
+        .valid_o(lut_valid_o), .ready_i(lut_ready_i), .data_o(lut_data_o));
+    csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH)) u_blk (
+        .clk_i, .rst_ni, .valid_i(blk_valid_i), .ready_o(blk_ready_o), .data_i(blk_data_i),
+        .valid_o(blk_valid_o), .ready_i(blk_ready_i), .data_o(blk_data_o));
+endmodule
+`default_nettype wire
