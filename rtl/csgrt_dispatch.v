@@ -153,7 +153,7 @@ module csgrt_dispatch #(
             wire [NUM_UNITS-1:0] room, here;
             for (k = 0; k < NUM_UNITS; k = k + 1) begin : g_lane_info
                 assign here[k] = (fill_count_q == k);
-                csgrt_fifo #(.WIDTH(INFO_W), .DEPTH(INFO_DEPTH)) u_info (
+                csgrt_fifo_block #(.WIDTH(INFO_W), .DEPTH(INFO_DEPTH)) u_info (
                     .clk_i, .rst_ni,
                     .valid_i (accept && here[k]), .ready_o (room[k]), .data_i (info_i),
                     .valid_o (info_valid_o[k]), .ready_i (info_ready_i[k]), .data_o (info_o[k*INFO_W +: INFO_W]));

@@ -122,8 +122,11 @@
 //   S6   (0)        a = rnd(eta cos, F) - sk   into the last queue
 //   eta, beside H..S1: div(ior_from << F, ior_to) (csgrt_div_core, F+8),
 //   eta^2 (1 multiplier, 2), rnd (0) into queues.
-// Per-hit values wait in small queues (csgrt_fifo, LUT RAM) instead of
-// riding along the pipelines: {d, flags, user}, {d} (for FD), {p, in_range},
+// Per-hit values wait in small queues instead of riding along the
+// pipelines (the wide ones csgrt_fifo_block, in block RAM: its head is
+// valid 2 clocks after a push, and every pop or read of these comes at
+// least a multiplier's 2 clocks after its push; the narrow refraction ones
+// csgrt_fifo, LUT RAM): {d, flags, user}, {d} (for FD), {p, in_range},
 // {g} (for the divisions), {eta, eta2}, {eta}, {n, dn}, {rnd(eta cos)},
 // {a, TIR} (the last three and the eta ones: REFRACTION; dn: REFLECTION or
 // REFRACTION).
@@ -167,15 +170,16 @@
 // ---- Timing --------------------------------------------------------------------
 // Latency (no back-pressure, idle front): 5F+63 clocks from a hit's
 // acceptance to its first child (BITS 12: 108, 16: 128, 24: 168, 32: 208);
-// without REFRACTION 4F+56 (the sequencer takes the hit from the normal's
-// queue, F+7 clocks before S6 would have finished: BITS 12: 92, 16: 108,
-// 24: 140, 32: 172). The consumer (csgrt_raytree) takes children by
+// without REFRACTION 4F+57 (the sequencer takes the hit from the normal's
+// queue, F+6 clocks before S6 would have finished: BITS 12: 93, 16: 109,
+// 24: 141, 32: 173; 4F+56 before the queue moved to block RAM, whose head
+// comes one clock later). The consumer (csgrt_raytree) takes children by
 // valid/ready and m_user_o and assumes no latency.
 // Throughput: one child per clock while hits are waiting at the sequencer:
 // a hit's children leave on consecutive clocks and the next hit's first
 // child follows its predecessor's last without a gap. The front accepts a
 // hit every third clock at most, and holds each of its 32 credits for 3F+43
-// clocks (2F+36 without REFRACTION): back to back, a hit every
+// clocks (2F+37 without REFRACTION): back to back, a hit every
 // max(3, (3F+43)/32) clocks (BITS 12, 16: 3; 24: 3.3; 32: 4.1; without
 // REFRACTION 3 up to BITS 32), so hits with fewer children than that leave
 // gaps.
@@ -341,7 +345,7 @@ module csgrt_spawn #(
 `endif
     wire [QHW-1:0] qh_data;
     wire           unused_qh_ready, unused_qh_valid;
-    csgrt_fifo #(.WIDTH(QHW), .DEPTH(CTX)) u_q_hit (
+    csgrt_fifo_block #(.WIDTH(QHW), .DEPTH(CTX)) u_q_hit (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qh_ready),
         .data_i({s_user_i, s_flags, s_d_i}), .valid_o(unused_qh_valid), .ready_i(seq_load), .data_o(qh_data));
     wire [3*B-1:0] qh_d     = qh_data[0 +: 3*B];
@@ -351,7 +355,7 @@ module csgrt_spawn #(
     wire [3*B-1:0] qnd_d;
     wire           qnd_pop;
     wire           unused_qnd_ready, unused_qnd_valid;
-    csgrt_fifo #(.WIDTH(3 * B), .DEPTH(CTX)) u_q_nd (
+    csgrt_fifo_block #(.WIDTH(3 * B), .DEPTH(CTX)) u_q_nd (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qnd_ready),
         .data_i(s_d_i), .valid_o(unused_qnd_valid), .ready_i(qnd_pop), .data_o(qnd_d));
 
@@ -425,7 +429,7 @@ module csgrt_spawn #(
     wire           qp_push = p_valid_q && (p_col_q == 2'd2);
     wire [3*B:0]   qp_data;
     wire           unused_qp_ready, unused_qp_valid;
-    csgrt_fifo #(.WIDTH(3 * B + 1), .DEPTH(CTX)) u_q_p (
+    csgrt_fifo_block #(.WIDTH(3 * B + 1), .DEPTH(CTX)) u_q_p (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(qp_push), .ready_o(unused_qp_ready),
         .data_i({&p_inr_q, p_vec_q}), .valid_o(unused_qp_valid), .ready_i(seq_load), .data_o(qp_data));
     wire [3*B-1:0] qp_p   = qp_data[0 +: 3*B];
@@ -513,7 +517,7 @@ module csgrt_spawn #(
     wire [3*GW-1:0] qg_g;
     wire            qg_pop;
     wire            unused_qg_ready, unused_qg_valid;
-    csgrt_fifo #(.WIDTH(3 * GW), .DEPTH(CTX)) u_q_g (
+    csgrt_fifo_block #(.WIDTH(3 * GW), .DEPTH(CTX)) u_q_g (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(acc_done_q), .ready_o(unused_qg_ready),
         .data_i(g_vec), .valid_o(unused_qg_valid), .ready_i(qg_pop), .data_o(qg_g));
 
@@ -670,7 +674,7 @@ module csgrt_spawn #(
             always @(posedge clk_i) ndb_dn_q <= dn_d;
             wire [3*NW+DNW-1:0] qn_data;
             wire                unused_qn_ready;
-            csgrt_fifo #(.WIDTH(3 * NW + DNW), .DEPTH(CTX)) u_q_n (
+            csgrt_fifo_block #(.WIDTH(3 * NW + DNW), .DEPTH(CTX)) u_q_n (
                 .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(ndb_valid_q), .ready_o(unused_qn_ready),
                 .data_i({ndb_dn_q, ndb_n_q}), .valid_o(qn_valid), .ready_i(seq_load), .data_o(qn_data));
             assign qn_n  = qn_data[0 +: 3*NW];
@@ -680,7 +684,7 @@ module csgrt_spawn #(
             assign dn_d = {DNW{1'b0}};
             wire unused_dn = ^dn_d;
             wire unused_qn_ready;
-            csgrt_fifo #(.WIDTH(3 * NW), .DEPTH(CTX)) u_q_n (
+            csgrt_fifo_block #(.WIDTH(3 * NW), .DEPTH(CTX)) u_q_n (
                 .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(ndb_valid_q), .ready_o(unused_qn_ready),
                 .data_i(ndb_n_q), .valid_o(qn_valid), .ready_i(seq_load), .data_o(qn_n));
             assign qn_dn = {DNW{1'b0}};
@@ -1099,7 +1103,7 @@ module csgrt_spawn #(
     wire [QOW-1:0] qo_data;
     wire           qo_pop = adv_c && u2_valid && o_last;
     wire           unused_qo_valid;
-    csgrt_fifo #(.WIDTH(QOW), .DEPTH(CTX)) u_q_out (
+    csgrt_fifo_block #(.WIDTH(QOW), .DEPTH(CTX)) u_q_out (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(qo_push), .ready_o(qo_ready),
         .data_i({qh_user, qp_inr, qh_d, qp_p}), .valid_o(unused_qo_valid), .ready_i(qo_pop), .data_o(qo_data));
     wire [3*B-1:0] qo_p   = qo_data[0 +: 3*B];
