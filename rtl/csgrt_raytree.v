@@ -200,13 +200,19 @@ module csgrt_raytree #(
     // shading is issued, and not again until its contribution is in: a read
     // never meets a write to the same context (no_rw_check).
     reg [47:0]         w_q     [0:P-1];
+    reg [3:0]          depth_q [0:P-1];
+    reg [47:0]         wr_q    [0:P-1];
     (* ram_style = "block", no_rw_check *) reg [3*B-1:0]  ho_q    [0:P-1];
     (* ram_style = "block", no_rw_check *) reg [3*B-1:0]  hd_q    [0:P-1];
     reg [TW-1:0]       ht_q    [0:P-1];
     (* ram_style = "block", no_rw_check *) reg [10*B-1:0] hcoef_q [0:P-1];
     (* ram_style = "block", no_rw_check *) reg [MAT_W-1:0] hmat_q [0:P-1];
     reg [15:0]         hfilt_q [0:P-1];   // the material's filter, for csgrt_contrib
+    reg [NS-1:0]       near_q  [0:P-1];
+    reg [NS-1:0]       after_q [0:P-1];   // far side: the transmitted child's flags
+    reg [47:0]         wt_q    [0:P-1];   // the transmitted child's weight
     reg [P-1:0]        tx_q;              // the hit has a transmitted child
+    reg [RUN_W-1:0]    run_q   [0:P-1];
     // the light colours for shading, scaled by the shadow rays
     reg [47:0]         lcol_q  [0:(P << KW)-1];
     // the stack: {run, flags, depth, w, d, o}. P * MAX_DEPTH entries of some
@@ -319,40 +325,6 @@ module csgrt_raytree #(
         .data_o ({sp_ior_to_o, sp_ior_from_o, sp_refract_o, sp_user_o, sp_reflect_o, sp_lights_o, sp_coef_o, sp_t_o,
                   sp_d_o, sp_o_o}));
 
-    // The fields a hit's children inherit (flags near and after the hit, the
-    // look-behind run, depth, the reflected and transmitted weights) wait in
-    // a queue beside the spawn requests: csgrt_spawn answers its requests in
-    // order, each hit's children on consecutive clocks with the last one
-    // marked, so the head is always the parent of the child at hand. (Per
-    // context memories read by the child's context, as before, would be LUT
-    // RAM with a 2^H-bit read multiplexer; a queue is one block RAM read.)
-    // At most one hit per context is with csgrt_spawn: P entries suffice.
-    localparam PAR_W = CB + RUN_W + 2 * NS + 4 + 48 + 48;
-    reg                 par_push;
-    reg  [PAR_W-1:0]    par_data;
-    wire                par_valid;
-    wire [PAR_W-1:0]    par_head;
-    wire                unused_par_room;
-    csgrt_fifo_block #(.WIDTH(PAR_W), .DEPTH(P)) u_parents (
-        .clk_i, .rst_ni, .valid_i (par_push), .ready_o (unused_par_room), .data_i (par_data),
-        .valid_o (par_valid), .ready_i (ch_valid_i && ch_ready_o && ch_last_i), .data_o (par_head));
-    // {ctx, run, after, near, depth, wt, wr}
-    wire [47:0]       p_wr    = par_head[0 +: 48];
-    wire [47:0]       p_wt    = par_head[48 +: 48];
-    wire [3:0]        p_depth = par_head[96 +: 4];
-    wire [NS-1:0]     p_near  = par_head[100 +: NS];
-    wire [NS-1:0]     p_after = par_head[100 + NS +: NS];
-    wire [RUN_W-1:0]  p_run   = par_head[100 + 2*NS +: RUN_W];
-    wire [CB-1:0]     p_ctx   = par_head[100 + 2*NS + RUN_W +: CB];
-`ifndef SYNTHESIS
-    always @(posedge clk_i)
-        if (rst_ni && ch_valid_i && ch_ready_o && (!par_valid || p_ctx != ch_user_i)) begin
-            $display("ERROR %m: a child of context %0d arrived, the parent queue's head is %0s context %0d",
-                     ch_user_i, par_valid ? "" : "(empty)", p_ctx);
-            $fatal;
-        end
-`endif
-
     // ---- event selection ----------------------------------------------------------------
     // a free context and room in the output buffer for a new pixel
     reg  [CB-1:0] free_ctx;
@@ -384,7 +356,7 @@ module csgrt_raytree #(
     // One event per clock; every event may push one ray, and the bounds
     // above guarantee rq_room, which is still checked.
     wire ev_ct  = ct_valid && rq_room;
-    wire ev_ch  = !ev_ct && ch_valid_i && rq_room && par_valid;
+    wire ev_ch  = !ev_ct && ch_valid_i && rq_room;
     wire ev_hp  = !ev_ct && !ev_ch && hp_valid && rq_room && spq_room;
     wire ev_pop = !ev_ct && !ev_ch && !ev_hp && pop_staged_q && rq_room;
     wire ev_cam = !ev_ct && !ev_ch && !ev_hp && !ev_pop && cam_valid_i && free_any && room_out && rq_room
@@ -488,7 +460,6 @@ module csgrt_raytree #(
     always @(posedge clk_i) begin
         rq_push  <= 1'b0;
         spq_push <= 1'b0;
-        par_push <= 1'b0;
         if (!rst_ni) begin
             busy_q     <= {P{1'b0}};
             spawning_q <= {P{1'b0}};
@@ -531,7 +502,7 @@ module csgrt_raytree #(
                             rq_rec  <= rec(1'b1, ch_user_i, ch_light_i, 48'd0, 4'd0, {3{ONE}}, 5'd0, ch_dist_i);
                             rq_o    <= ch_p_i;
                             rq_d    <= ch_d_i;
-                            rq_info <= info(1'b1, p_near, ch_dist_i, p_run);
+                            rq_info <= info(1'b1, near_q[ch_user_i], ch_dist_i, run_q[ch_user_i]);
                             pend_q[ch_user_i] <= pend_q[ch_user_i] + 1'b1;
                         end else begin
                             lcol_q[{ch_user_i, ch_light_i}] <= 48'd0;
@@ -539,19 +510,19 @@ module csgrt_raytree #(
                     end
                     K_REFLECT: begin
                         stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
-                            {p_run, p_near, p_depth + 4'd1, p_wr, ch_d_i, ch_p_i};
+                            {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wr_q[ch_user_i], ch_d_i, ch_p_i};
                         sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
                     end
                     K_REFRACT: begin
                         // the transmitted ray: far side, the flags after the crossing (and the look-ahead)
                         stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
-                            {{RUN_W{1'b0}}, p_after, p_depth + 4'd1, p_wt, ch_d_i, ch_p_i};
+                            {{RUN_W{1'b0}}, after_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
                         sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
                     end
                     K_TIR: begin
                         // total internal reflection: near side, like a reflected ray, with the transmitted weight
                         stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
-                            {p_run, p_near, p_depth + 4'd1, p_wt, ch_d_i, ch_p_i};
+                            {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
                         sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
                     end
                     default: ;   // CONTINUE: not asked for
@@ -575,12 +546,18 @@ module csgrt_raytree #(
                         end
                     end else begin
                         w_q[h_ctx]     <= h_w;
+                        depth_q[h_ctx] <= h_depth;
+                        wr_q[h_ctx]    <= hp_w_r;
                         ho_q[h_ctx]    <= h_o;
                         hd_q[h_ctx]    <= h_d;
                         ht_q[h_ctx]    <= h_t;
                         hcoef_q[h_ctx] <= h_coef;
                         hmat_q[h_ctx]  <= h_mat;
                         hfilt_q[h_ctx] <= h_mat[M_FILTER +: 16];
+                        near_q[h_ctx]  <= h_near;
+                        run_q[h_ctx]   <= h_run;
+                        after_q[h_ctx] <= h_after;
+                        wt_q[h_ctx]    <= hp_w_t;
                         tx_q[h_ctx]    <= want_refr;
                         pend_q[h_ctx]  <= {PW{1'b0}};
                         if (want_spawn) begin
@@ -588,8 +565,6 @@ module csgrt_raytree #(
                             spq_data <= {h_ior_to, h_ior_from, want_refr, h_ctx, want_refl, light_mask, h_coef, h_t,
                                          h_d, h_o};
                             spawning_q[h_ctx] <= 1'b1;
-                            par_push <= 1'b1;
-                            par_data <= {h_ctx, h_run, h_after, h_near, h_depth, hp_w_t, hp_w_r};
                         end else begin
                             shade_q[h_ctx] <= 1'b1;
                         end
