@@ -182,9 +182,9 @@ echo "synth: nextpnr done in $((T2 - T1)) s (exit $PNR_RC)"
 # ------------------------------------------------------------------ report
 set +e
 python3 - "$OUT" "$BITS" "$FREQ" "$BAUD" "$UART_DIV" "$PLL_MHZ" "$PNR_RC" "$((T1 - T0))" "$((T2 - T1))" \
-          "$EFFECTS" "$TREE_HEIGHT" "$MAX_LEAVES" <<'PY'
+          "$EFFECTS" "$TREE_HEIGHT" "$MAX_LEAVES" "$LUT_TILE_MAX" <<'PY'
 import json, re, sys
-out, bits, freq, baud, udiv, pll_mhz, pnr_rc, t_syn, t_pnr, effects, height, leaves = sys.argv[1:]
+out, bits, freq, baud, udiv, pll_mhz, pnr_rc, t_syn, t_pnr, effects, height, leaves, tile_max = sys.argv[1:]
 freq = float(freq)
 stat = open(f"{out}/yosys_stat.txt").read()
 def ycount(cell):   # "  cell  count" (older yosys) or "  count  cell" (newer)
@@ -253,6 +253,11 @@ for name, u in util.items():
 print(f"   yosys: LUT4 {lut4}, CCU2C {ccu2}, FF {ffs}, MULT18X18D {rep['yosys']['MULT18X18D']}, DP16KD {rep['yosys']['DP16KD']}")
 if errors:
     print("   nextpnr failed:"); [print("     " + e) for e in errors[:5]]
+    mult = util.get("MULT18X18D")
+    if mult and mult["used"] > mult["available"] and int(tile_max) < 81:
+        print("   hint: the multipliers are over; LUT_TILE_MAX=81 (--lut-tile-max 81) builds the small corner")
+        print("         tiles of the wide products in the fabric instead (BITS 24 with shadows and reflection:")
+        print("         170 -> 155 MULT18X18D for about 3 k LUT4; docs/fpga.md \"Multipliers\")")
 if achieved is not None:
     print(f"   Fmax (core clock): {achieved:.2f} MHz -> {'MET' if rep['timing_met'] else 'NOT MET'} at {freq:g} MHz")
 if not rep["timing_met"] and crit:
