@@ -47,7 +47,7 @@ help:
 	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [WIDTH=..] [HEIGHT=..]"
 	@echo "             run the RTL in Verilator; writes out/sim/<scene>.png and compares with the model"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
-	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [LUT_TILE_MAX=81] [FREQ=100] [BAUD=3000000]"
+	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [LUT_TILE_MAX=81] [TREE_HEIGHT=7] [FREQ=100] [BAUD=3000000]"
 	@echo "             ULX3S bitstream (yosys, nextpnr-ecp5, ecppack) to out/synth/; docs/fpga.md"
 	@echo "make lint    verilator --lint-only -Wall and yosys synthesis of every RTL module"
 	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
@@ -178,6 +178,7 @@ synth: deps
 	    $(if $(filter 1,$(SHARE_II)),--share-ii 1) \
 	    $(if $(filter-out 1,$(UNITS)),--units $(UNITS)) \
 	    $(if $(LUT_TILE_MAX),--lut-tile-max $(LUT_TILE_MAX)) \
+	    $(if $(TREE_HEIGHT),--tree-height $(TREE_HEIGHT)) \
 	    --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
 
 # the board top in Verilator with a UART model (tb/board/), built as the
