@@ -1,13 +1,16 @@
 `default_nettype none
 // csgrt_fifo_block — csgrt_fifo with its words in block RAM (ECP5 DP16KD) for
 // wide queues that would otherwise spend hundreds of LUT-RAM cells
-// (TRELLIS_DPR16X4) and their read multiplexers: the ray tree's record queue
-// beside csgrt_hit_prep and its spawn request queue (docs/fpga.md, "LUT RAM
-// into block RAM"). LUTs are the device's scarce resource; block RAMs are not.
+// (TRELLIS_DPR16X4) and their read multiplexers: csgrt_raytree's ray and
+// spawn-request queues, csgrt_hit_prep's record queue, csgrt_spawn's wide
+// per-hit queues, csgrt_dispatch's ray and info queues (docs/fpga.md, "LUT
+// RAM into block RAM"). LUTs are the device's scarce resource; block RAMs
+// are not.
 //
 // Block RAM reads are synchronous, so the head word lives in an output
 // register loaded from the RAM: a word written at a rising edge reaches the
-// output register at the next enabled one. Compared with csgrt_fifo:
+// output register at the next one if the register is free. Compared with
+// csgrt_fifo:
 //   latency 2 clocks (written at edge e, valid_o after edge e + 1), then one
 //   word per clock; capacity DEPTH + 1 (DEPTH in the RAM, 1 in the output
 //   register). Same valid/ready handshake; ready_o and valid_o are registers

@@ -164,7 +164,9 @@
 //   (1, 0): MULT18X18D 12, LUT4 15.6k + CCU2C 2.5k, FF 7.5k, DPR16X4 188, DP16KD 3
 //   (0, 0): MULT18X18D 12, LUT4 15.4k + CCU2C 2.4k, FF 7.3k, DPR16X4 180, DP16KD 3
 // (BITS 24, (1, 1), an earlier build: MULT18X18D 76, LUT4 39.7k + CCU2C
-// 6.7k, FF 20.3k, DPR16X4 354). The csgrt_div_cores (N's and U2's three)
+// 6.7k, FF 20.3k, DPR16X4 354). These figures predate the wide queues'
+// move to block RAM (csgrt_fifo_block, ad33daa), which took most of those
+// DPR16X4 into DP16KD. The csgrt_div_cores (N's and U2's three)
 // take most of the LUTs in every configuration.
 //
 // ---- Timing --------------------------------------------------------------------
