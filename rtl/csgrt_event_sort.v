@@ -396,9 +396,12 @@ module csgrt_event_sort #(
             if (s1_last_q) fpay_q <= s1_pay_q;
         end
         // the look-behind fix-up with a secondary ray's last leaf
-        // (fix_we is constant zero when SECONDARY = 0)
-        for (fs = 0; fs < NS; fs = fs + 1)
-            if (fix_we[fs]) fflags_q[fs] <= fix_val[fs];
+        // (fix_we is constant zero when SECONDARY = 0). The guard changes
+        // nothing in hardware; it spares Verilator a loop over every slot on
+        // every clock (fix_we is non-zero once per secondary ray)
+        if (|fix_we)
+            for (fs = 0; fs < NS; fs = fs + 1)
+                if (fix_we[fs]) fflags_q[fs] <= fix_val[fs];
         // drain bank
         if (handover) begin
             dcnt_q   <= fcnt_q;
