@@ -44,10 +44,10 @@ help:
 	@echo "make model   build build/csgrt, the golden model and scene compiler"
 	@echo "make render [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [WIDTH=320] [HEIGHT=240]"
 	@echo "             render with the golden model to out/model/<scene>.png"
-	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [WIDTH=..] [HEIGHT=..]"
+	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [CONTEXTS=8] [WIDTH=..] [HEIGHT=..]"
 	@echo "             run the RTL in Verilator; writes out/sim/<scene>.png and compares with the model"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
-	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [LUT_TILE_MAX=81] [TREE_HEIGHT=7] [FREQ=100] [BAUD=3000000]"
+	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [CONTEXTS=16] [LUT_TILE_MAX=81] [TREE_HEIGHT=7] [FREQ=100] [BAUD=3000000]"
 	@echo "             ULX3S bitstream (yosys, nextpnr-ecp5, ecppack) to out/synth/; docs/fpga.md"
 	@echo "make lint    verilator --lint-only -Wall and yosys synthesis of every RTL module"
 	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
@@ -115,11 +115,12 @@ $(BUILD)/tb/frame%: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,$*,tb/frame/tb_frame.cpp,-DFRAME_BITS=$* -DFRAME_UNITS=1,-lgtest -lgtest_main,1)
 $(BUILD)/tb/frame24u2: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 -DFRAME_UNITS=2 -DFRAME_SPECULAR=0,-lgtest -lgtest_main,2,-GSPECULAR=0 -GSORT_INSERTS=2 -GSHARE_II=1)
-# with every effect unit (the ray tree: shadows, reflection, refraction)
+# with every effect unit (the ray tree: shadows, reflection, refraction);
+# frame16fx with 16 ray-tree contexts, frame24fx with the default 8
 FX_UNITS := -GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1
 FX_DEFS  := -DFRAME_UNITS=1 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=1
 $(BUILD)/tb/frame16fx: $(FRAME_DEPS) | deps
-	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS))
+	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS) -GCONTEXTS=16)
 $(BUILD)/tb/frame24fx: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS))
 # shadows and reflection with two intersection lanes (refraction needs one lane)
@@ -144,11 +145,16 @@ SORT_INSERTS ?= 1
 # a third of their multipliers; or 1, ~1 % fewer cycles;
 # docs/architecture.md); a build with 1 gets the suffix ii1
 SHARE_II ?= 3
-SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHARE_II)),ii1,)
+# pixels in flight in the ray tree (csgrt_top CONTEXTS, a power of two):
+# with few leaves per scene the contexts, not the intersection unit, bound
+# the rate (docs/architecture.md "Contexts"); a build with another number
+# than 8 gets the suffix cN
+CONTEXTS ?= 8
+SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHARE_II)),ii1,)$(if $(filter-out 8,$(CONTEXTS)),c$(CONTEXTS),)
 SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
 $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION) -DCSGRT_SPECULAR=$(SPECULAR),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION) -GSPECULAR=$(SPECULAR) -GSORT_INSERTS=$(SORT_INSERTS) -GSHARE_II=$(SHARE_II),--trace-fst)
+	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION) -DCSGRT_SPECULAR=$(SPECULAR),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION) -GSPECULAR=$(SPECULAR) -GSORT_INSERTS=$(SORT_INSERTS) -GSHARE_II=$(SHARE_II) -GCONTEXTS=$(CONTEXTS),--trace-fst)
 
 sim: model
 	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1 REFRACTION=1 SPECULAR=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0 REFRACTION=0 SPECULAR=1,$$($(BUILD)/csgrt units $(SCENE))))" \
@@ -177,6 +183,7 @@ synth: deps
 	    $(if $(filter 0,$(SPECULAR)),--no-specular) $(if $(filter 2,$(SORT_INSERTS)),--sort-inserts 2) \
 	    $(if $(filter 1,$(SHARE_II)),--share-ii 1) \
 	    $(if $(filter-out 1,$(UNITS)),--units $(UNITS)) \
+	    $(if $(filter-out 8,$(CONTEXTS)),--contexts $(CONTEXTS)) \
 	    $(if $(LUT_TILE_MAX),--lut-tile-max $(LUT_TILE_MAX)) \
 	    $(if $(TREE_HEIGHT),--tree-height $(TREE_HEIGHT)) \
 	    --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)

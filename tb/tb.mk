@@ -102,7 +102,8 @@ lint-rtl:
 	$(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GNUM_UNITS=2 -GSHADOWS=1 -GREFLECTION=1 rtl/csgrt_top.v; \
 	for fx in "-GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1" "-GSHADOWS=1 -GREFLECTION=1" "-GSHADOWS=1" "-GREFLECTION=1" "-GREFRACTION=1" \
 	          "-GSPECULAR=0" "-GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1 -GSPECULAR=0" \
-	          "-GSHARE_II=1" "-GSHARE_II=1 -GSPECULAR=0" "-GSHARE_II=1 -GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1"; do for b in $(LINT_TOP_BITS); do \
+	          "-GSHARE_II=1" "-GSHARE_II=1 -GSPECULAR=0" "-GSHARE_II=1 -GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1" \
+	          "-GSHADOWS=1 -GREFLECTION=1 -GCONTEXTS=16" "-GSHADOWS=1 -GREFLECTION=1 -GREFRACTION=1 -GCONTEXTS=32"; do for b in $(LINT_TOP_BITS); do \
 	    echo "verilator lint csgrt_top BITS=$$b $$fx"; \
 	    $(VERILATOR) --lint-only -Wall -y rtl --top-module csgrt_top -GBITS=$$b $$fx rtl/csgrt_top.v; \
 	done; done; \

@@ -6,7 +6,7 @@
 #                  [--tree-height 8] [--max-leaves 64] [--effects none|all|shadows,reflection,refraction]
 #                  [--no-specular] [--sort-inserts 1|2] [--share-ii 3|1] [--units 1]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
-#                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2]
+#                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2] [--contexts 8]
 #
 # Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
 # with their input and output registers inside the block (rtl/csgrt_mul.v);
@@ -40,7 +40,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
-EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
+EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
 LUT_TILE_MAX=36
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -54,6 +54,7 @@ while [ $# -gt 0 ]; do
         --sort-inserts) SORT_INSERTS=$2; shift 2 ;;   # csgrt_top's SORT_INSERTS (the event sorter's insertions per clock)
         --share-ii) SHARE_II=$2; shift 2 ;;       # csgrt_top's SHARE_II (clocks per item of the time-shared blocks)
         --units) UNITS=$2; shift 2 ;;             # csgrt_top's NUM_UNITS (intersection lanes)
+        --contexts) CONTEXTS=$2; shift 2 ;;       # csgrt_top's CONTEXTS (pixels in flight in the ray tree)
         --per-module) PER_MODULE=1; shift ;;
         --behavioural-mul) DEFS="-DSYNTHESIS"; shift ;;
         --lut-tile-max) LUT_TILE_MAX=$2; shift 2 ;;   # csgrt_mul's LUT_TILE_MAX (fabric tiles up to this product of chunk widths)
@@ -82,6 +83,7 @@ done
 case "$SORT_INSERTS" in 1) ;; 2) EFFECTS="$EFFECTS,sort2" ;; *) echo "synth.sh: --sort-inserts takes 1 or 2" >&2; exit 1 ;; esac
 case "$SHARE_II" in 3) ;; 1) EFFECTS="$EFFECTS,share1" ;; *) echo "synth.sh: --share-ii takes 3 or 1" >&2; exit 1 ;; esac
 case "$UNITS" in 1) ;; [2-9]) EFFECTS="$EFFECTS,units$UNITS" ;; *) echo "synth.sh: --units takes 1 to 9" >&2; exit 1 ;; esac
+case "$CONTEXTS" in 8) ;; 2|4|16|32|64) EFFECTS="$EFFECTS,ctx$CONTEXTS" ;; *) echo "synth.sh: --contexts takes a power of two from 2 to 64" >&2; exit 1 ;; esac
 case "$LUT_TILE_MAX" in
     36) ;;
     *[!0-9]*|'') echo "synth.sh: --lut-tile-max takes a number of bits squared (36, 81, ...)" >&2; exit 1 ;;
@@ -121,7 +123,7 @@ LPF
 # SYNTH_CORE_SRC: other core sources (a test hook: a stub csgrt_top checks the flow in a minute)
 SRC="${SYNTH_CORE_SRC:-$(echo rtl/*.v)} rtl/board/csgrt_uart_rx.v rtl/board/csgrt_uart_tx.v rtl/board/csgrt_board_ctrl.v rtl/board/ulx3s/csgrt_ulx3s.v"
 T0=$(date +%s)
-PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS
+PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS -set CONTEXTS $CONTEXTS
         -set CLK_HZ $CLK_HZ -set PLL_CLKI_DIV $CLKI_DIV -set PLL_CLKFB_DIV $CLKFB_DIV
         -set PLL_CLKOP_DIV $CLKOP_DIV -set PLL_CLKOP_CPHASE $CLKOP_CPHASE -set UART_DIV $UART_DIV"
 PARAMS=$(echo $PARAMS)   # one line for yosys
