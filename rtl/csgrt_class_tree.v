@@ -87,7 +87,7 @@ module csgrt_class_tree #(
     // value of the node or slot that holds the event's slot is computed too
     // but never read: the path below replaces it.
     wire [IW-1:0] io_w [2:2*NS-1];
-    genvar s, i, j;
+    genvar s, i, j, k;
     generate
         for (s = 0; s < NS; s = s + 1) begin : g_slot
             assign io_w[NS + s] = (slot_used_i[s] && flags_i[s]) ? {1'b1, slot_mat_i[s*MB +: MB]} : {IW{1'b0}};
@@ -117,22 +117,27 @@ module csgrt_class_tree #(
     assign slot_w[0] = slot_i;
     generate
         for (j = 1; j <= H; j = j + 1) begin : g_path
-            // height j-1 holds heap positions NL .. 2NL-1 (NL = NS >> (j-1)),
-            // so the path's place pos on it is heap position {1, pos}; read
-            // straight from io_w (a copy of each height as an array of its
-            // own cost the Verilator model a third of the walker's time)
+            localparam NL = NS >> (j - 1);             // slots or nodes at height j-1
+            // height j-1 as an array of its own, indexed by the slot's upper bits
+            wire [IW-1:0] level [0:NL-1];
+            for (k = 0; k < NL; k = k + 1) begin : g_level
+                assign level[k] = io_w[NL + k];
+            end
             wire [H-j:0]  pos     = slot_w[j-1][H-1:j-1];  // the path's place on height j-1
             localparam [H-j:0] SIBLING = 1;            // the sibling's place: pos ^ 1
-            wire [IW-1:0] sib     = io_w[{1'b1, pos ^ SIBLING}];
+            wire [IW-1:0] sib     = level[pos ^ SIBLING];
             wire [CW-1:0] sib_c   = {1'b0, sib[MB], {MB{1'b0}}, sib[MB-1:0]};   // IN m or OUT
             wire          on_right = pos[0];
             wire [1:0]    op;
             if (j == H) begin : g_root
                 assign op = node_op_i[3:2];
             end else begin : g_inner
-                // the path's node at height j: heap position {1, the slot's bits above j}
-                wire [H-j:0] node = {1'b1, slot_w[j-1][H-1:j]};
-                assign op = node_op_i[2*node +: 2];
+                // the operators of height j as an array, indexed by the slot's bits above j
+                wire [1:0] ops [0:(NS>>j)-1];
+                for (k = 0; k < (NS >> j); k = k + 1) begin : g_op
+                    assign ops[k] = node_op_i[2*((NS >> j) + k) +: 2];
+                end
+                assign op = ops[slot_w[j-1][H-1:j]];
             end
             wire [CW-1:0] c;
             csgrt_class_node #(.MAT_BITS(MB)) u_node (
