@@ -142,8 +142,9 @@ SPECULAR   ?= 1
 SORT_INSERTS ?= 1
 # the clocks per item of the camera, the shading, the ray tree's arithmetic
 # and the secondary rays' children (csgrt_top SHARE_II: 3,
-# a third of their multipliers; or 1, ~1 % fewer cycles;
-# docs/architecture.md); a build with 1 gets the suffix ii1
+# a third of their multipliers; or 1, ~1 % fewer cycles on scenes with many
+# leaves, up to a third fewer where the ray tree's contexts bound the rate;
+# docs/architecture.md "Contexts"); a build with 1 gets the suffix ii1
 SHARE_II ?= 3
 # pixels in flight in the ray tree (csgrt_top CONTEXTS, a power of two):
 # with few leaves per scene the contexts, not the intersection unit, bound
