@@ -32,6 +32,10 @@ using Clock = std::chrono::steady_clock;
 #ifndef CSGRT_SPECULAR
 #define CSGRT_SPECULAR 1
 #endif
+// csgrt_top's CONTEXTS (pixels in flight in the ray tree; make sim CONTEXTS=N)
+#ifndef CSGRT_CONTEXTS
+#define CSGRT_CONTEXTS 8
+#endif
 
 namespace {
 
@@ -173,6 +177,16 @@ int main(int argc, char** argv) {
     std::printf("intersection units      %d\n", CSGRT_NUM_UNITS);
     std::printf("intersection-unit utilisation  %.3f pairs/cycle per unit (bound pairs/units = %.0f cycles, frame at %.3fx)\n",
                 double(st.pairs) / double(st.cycles) / CSGRT_NUM_UNITS, bound, double(st.cycles) / bound);
+    if (kEffects) {
+        std::printf("ray-tree contexts       %d (pixels in flight)\n", CSGRT_CONTEXTS);
+        // well above the bound, the contexts rather than the intersection
+        // unit set the rate (docs/architecture.md "Contexts": basic.pov at
+        // 64x48 is 2.88x its bound with 8 contexts, 1.10x with 32)
+        if (st.cycles > 1.2 * bound && CSGRT_CONTEXTS < 64)
+            std::printf("note: the frame took %.2fx the intersection bound; more ray-tree contexts may bring it "
+                        "closer (make sim CONTEXTS=%d)\n",
+                        double(st.cycles) / bound, 2 * CSGRT_CONTEXTS);
+    }
     std::printf("simulation wall time    %.2f s (%.0f simulated cycles/s)\n", st.wall_seconds,
                 st.total_cycles / st.wall_seconds);
     if (!order_ok) std::printf("pixel order: NOT raster order\n");
