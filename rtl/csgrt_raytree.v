@@ -642,5 +642,16 @@ module csgrt_raytree #(
     assign pix_x_o     = o_xy_q[11:0];
     assign pix_y_o     = o_xy_q[23:12];
     assign pix_rgb_o   = {code[7:0], code[15:8], code[23:16]};
+
+    // context and output-buffer indices wrap at CB / OBW bits
+    generate
+        if (CONTEXTS < 2 || (1 << CB) != CONTEXTS) begin : g_bad_param
+            initial begin
+                $display("ERROR %m: CONTEXTS must be a power of two >= 2 (make sim / make synth CONTEXTS=N), not %0d",
+                         CONTEXTS);
+                $finish;
+            end
+        end
+    endgenerate
 endmodule
 `default_nettype wire
