@@ -27,10 +27,14 @@
 // The same classification bit for bit as every node evaluated by the full
 // table (tb/class_tree), at about a third of the logic.
 //
-// Pipeline: the slot values and the path's BORDER are built combinationally
-// from the inputs and combined by the first height in the same clock; then
-// one registered stage per height. Latency: TREE_HEIGHT clocks (counted in
-// enabled clocks). Throughput: one event per clock.
+// Pipeline: stage 0 registers the event's reads by its slot: the flags,
+// the path's BORDER (the slot's material), the sibling slot's IN/OUT value
+// and height 1's operator (each a 2^H-to-1 choice by slot_i); then one
+// registered stage per height. (Without stage 0 the slot reads and the
+// first node were one clock: 12 LUT levels, the out-of-context critical
+// path of this module and of csgrt_walker, tools/module_timing.py.)
+// Latency: TREE_HEIGHT + 1 clocks (counted in enabled clocks).
+// Throughput: one event per clock.
 // Handshake: none inside; ce_i is a global stage enable (low holds every
 // stage), the walker issues events and stalls the pipeline as a whole.
 module csgrt_class_tree #(
@@ -86,11 +90,40 @@ module csgrt_class_tree #(
     // ago, computed from its children's values of the clock before. The
     // value of the node or slot that holds the event's slot is computed too
     // but never read: the path below replaces it.
+    // ---- stage 0: the event's reads by its slot, registered --------------
+    wire [H-1:0]  sib_slot = slot_i ^ {{(H-1){1'b0}}, 1'b1};
+    wire [MB-1:0] slot_m   = slot_mat_i[slot_i*MB +: MB];
+    wire [IW-1:0] sib_in   = (slot_used_i[sib_slot] && flags_i[sib_slot]) ?
+                             {1'b1, slot_mat_i[sib_slot*MB +: MB]} : {IW{1'b0}};
+    wire [1:0]    op1_in;                  // height 1's operator on the path
+    reg  [NS-1:0] flags_q;
+    reg  [H-1:0]  slot0_q;
+    reg  [CW-1:0] path0_q;
+    reg  [IW-1:0] sib0_q;
+    reg  [1:0]    op1_q;
+    always @(posedge clk_i)
+        if (ce_i) begin
+            flags_q <= flags_i;
+            slot0_q <= slot_i;
+            path0_q <= entering_i ? {2'd2, {MB{1'b0}}, slot_m} : {2'd2, slot_m, {MB{1'b0}}};
+            sib0_q  <= sib_in;
+            op1_q   <= op1_in;
+        end
+
     wire [IW-1:0] io_w [2:2*NS-1];
     genvar s, i, j, k;
     generate
+        if (H == 1) begin : g_op1_root
+            assign op1_in = node_op_i[3:2];
+        end else begin : g_op1
+            wire [1:0] ops1 [0:(NS>>1)-1];
+            for (k = 0; k < (NS >> 1); k = k + 1) begin : g_op
+                assign ops1[k] = node_op_i[2*((NS >> 1) + k) +: 2];
+            end
+            assign op1_in = ops1[slot_i[H-1:1]];
+        end
         for (s = 0; s < NS; s = s + 1) begin : g_slot
-            assign io_w[NS + s] = (slot_used_i[s] && flags_i[s]) ? {1'b1, slot_mat_i[s*MB +: MB]} : {IW{1'b0}};
+            assign io_w[NS + s] = (slot_used_i[s] && flags_q[s]) ? {1'b1, slot_mat_i[s*MB +: MB]} : {IW{1'b0}};
         end
         for (i = 2; i < NS; i = i + 1) begin : g_node
             // (One register per generate block rather than an array written
@@ -112,24 +145,43 @@ module csgrt_class_tree #(
     // the pipeline, as the node levels of the whole tree were.
     wire [CW-1:0] path_w [0:H];      // the path's classification at height j (stage j)
     wire [H-1:0]  slot_w [0:H];      // the event's slot at stage j
-    wire [MB-1:0] slot_m = slot_mat_i[slot_i*MB +: MB];
-    assign path_w[0] = entering_i ? {2'd2, {MB{1'b0}}, slot_m} : {2'd2, slot_m, {MB{1'b0}}};
-    assign slot_w[0] = slot_i;
+    assign path_w[0] = path0_q;
+    assign slot_w[0] = slot0_q;
     generate
         for (j = 1; j <= H; j = j + 1) begin : g_path
             localparam NL = NS >> (j - 1);             // slots or nodes at height j-1
-            // height j-1 as an array of its own, indexed by the slot's upper bits
-            wire [IW-1:0] level [0:NL-1];
-            for (k = 0; k < NL; k = k + 1) begin : g_level
-                assign level[k] = io_w[NL + k];
-            end
             wire [H-j:0]  pos     = slot_w[j-1][H-1:j-1];  // the path's place on height j-1
-            localparam [H-j:0] SIBLING = 1;            // the sibling's place: pos ^ 1
-            wire [IW-1:0] sib     = level[pos ^ SIBLING];
+            wire [IW-1:0] sib;
+            if (j == 1) begin : g_sib_slot
+                assign sib = sib0_q;           // a slot, read in stage 0
+                if (H > 1) begin : g_pos_up
+                    wire unused_pos = ^pos[H-j:1];   // only pos[0] (the side) is read here
+                end else begin : g_io_slots
+                    wire unused_io = ^{io_w[2], io_w[3]};   // no node reads the slot values
+                end
+            end else begin : g_sib_node
+                // height j-1 as one vector of PW-bit fields, indexed by the
+                // slot's upper bits. PW is IW rounded up to a power of two:
+                // indexing IW-bit fields (IW = 9) made yosys compute the
+                // bit offset pos * IW with adders in front of the
+                // multiplexer (a chain of 4 LUTs on its select, the critical
+                // path of this stage); a power-of-two stride is a plain
+                // multiplexer tree
+                localparam PW = 1 << $clog2(IW);
+                wire [NL*PW-1:0] level;
+                for (k = 0; k < NL; k = k + 1) begin : g_level
+                    assign level[k*PW +: PW] = {{(PW-IW){1'b0}}, io_w[NL + k]};
+                end
+                localparam [H-j:0] SIBLING = 1;        // the sibling's place: pos ^ 1
+                wire [H-j:0] sib_pos = pos ^ SIBLING;
+                assign sib = level[sib_pos*PW +: IW];
+            end
             wire [CW-1:0] sib_c   = {1'b0, sib[MB], {MB{1'b0}}, sib[MB-1:0]};   // IN m or OUT
             wire          on_right = pos[0];
             wire [1:0]    op;
-            if (j == H) begin : g_root
+            if (j == 1) begin : g_first
+                assign op = op1_q;             // read in stage 0
+            end else if (j == H) begin : g_root
                 assign op = node_op_i[3:2];
             end else begin : g_inner
                 // the operators of height j as an array, indexed by the slot's bits above j
@@ -160,7 +212,7 @@ module csgrt_class_tree #(
         end
     endgenerate
 
-    csgrt_delay #(.WIDTH(TAG_WIDTH), .STAGES(H)) u_tag (
+    csgrt_delay #(.WIDTH(TAG_WIDTH), .STAGES(H + 1)) u_tag (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i),
         .valid_i(valid_i), .data_i(tag_i), .valid_o(valid_o), .data_o(tag_o));
 

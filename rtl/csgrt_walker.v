@@ -79,13 +79,13 @@
 //
 // Latency: a ray loaded at edge k issues its i-th event (i = 0, 1, ..) at
 // edge k+1+i (into the tree's first register); the tree's result is there
-// after edge k+i+TREE_HEIGHT and the record on valid_o (csgrt_skid) after
-// edge k+i+TREE_HEIGHT+1, the same with SECONDARY = 1 (counting probe
+// after edge k+i+TREE_HEIGHT+1 and the record on valid_o (csgrt_skid) after
+// edge k+i+TREE_HEIGHT+2, the same with SECONDARY = 1 (counting probe
 // tokens as events). Throughput: one token per clock (an event, or the
 // probe of an event at its predecessor's t); per ray max(1, issued tokens)
 // + 2 clocks with event_sort
 // (release -> next ray loaded), issued events = all of them on a miss, at
-// most hit index + TREE_HEIGHT + 2 on a hit; the same with SECONDARY = 1.
+// most hit index + TREE_HEIGHT + 3 on a hit; the same with SECONDARY = 1.
 // Handshake: valid/ready out through csgrt_skid; while the skid holds a
 // word (it cannot take another) the whole walker (tree included) stalls. No
 // combinational path from ready_i, nor from the tree's output, to ev_pop_o /
@@ -157,6 +157,7 @@ module csgrt_walker #(
     localparam LB = LEAF_BITS;
     localparam H  = TREE_HEIGHT;
     localparam NS = 1 << H;
+    localparam TL = H + 1;       // csgrt_class_tree's latency (stage 0, then one per height)
     localparam MB = MAT_BITS;
     localparam CW = 2 * MB + 2;
     localparam LBK = LOOK_BEHIND;
@@ -180,9 +181,9 @@ module csgrt_walker #(
     reg [1:0]               done_q;          // bank's ray has its result
     reg [NS-1:0]            fl0_q, fl1_q;    // flag banks
     reg [PAYLOAD_WIDTH-1:0] pl0_q, pl1_q;
-    // shadow of the tree's pipeline: stage k = 1 .. H at index k-1
-    reg [H-1:0]             sh_valid_q, sh_seq_q, sh_skip_q;
-    reg [H*H-1:0]           sh_slot_q;
+    // shadow of the tree's pipeline: stage k = 0 .. H at index k
+    reg [TL-1:0]            sh_valid_q, sh_seq_q, sh_skip_q;
+    reg [TL*H-1:0]          sh_slot_q;
 
     // ---- tree output and results ------------------------------------------
     wire          tv;
@@ -270,7 +271,7 @@ module csgrt_walker #(
     always @* begin
         undo = {NS{1'b0}};
         busy_other = 1'b0;
-        for (k = 0; k < H; k = k + 1) begin
+        for (k = 0; k < TL; k = k + 1) begin
             if (sh_valid_q[k] && !sh_skip_q[k] && sh_seq_q[k] == t_seq)
                 undo = undo ^ ({{(NS-1){1'b0}}, 1'b1} << sh_slot_q[k*H +: H]);
             if (sh_valid_q[k] && sh_seq_q[k] != seq_q) busy_other = 1'b1;
@@ -288,10 +289,10 @@ module csgrt_walker #(
     // ---- state ---------------------------------------------------------------
     always @(posedge clk_i) begin
         if (ce) begin
-            sh_valid_q <= {sh_valid_q[H-2:0], issue};
-            sh_seq_q   <= {sh_seq_q[H-2:0], seq_q};
-            sh_skip_q  <= {sh_skip_q[H-2:0], !toggle};
-            sh_slot_q  <= {sh_slot_q[H*(H-1)-1:0], ev_slot_i};
+            sh_valid_q <= {sh_valid_q[TL-2:0], issue};
+            sh_seq_q   <= {sh_seq_q[TL-2:0], seq_q};
+            sh_skip_q  <= {sh_skip_q[TL-2:0], !toggle};
+            sh_slot_q  <= {sh_slot_q[H*(TL-1)-1:0], ev_slot_i};
             if (issue && probe) pr_q <= 1'b1;
             if (issue && !probe) begin
                 pr_q <= 1'b0;
@@ -322,7 +323,7 @@ module csgrt_walker #(
             gv_q       <= 1'b0;
             pr_q       <= 1'b0;
             done_q     <= 2'b00;
-            sh_valid_q <= {H{1'b0}};
+            sh_valid_q <= {TL{1'b0}};
         end else if (ce) begin
             if (load) begin
                 act_q          <= 1'b1;

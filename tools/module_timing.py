@@ -134,7 +134,9 @@ def main():
     params = (f"-set BITS {a.bits} -set TREE_HEIGHT {a.tree_height} -set MAX_LEAVES {a.max_leaves} "
               f"-set SHADOWS {fx['shadows']} -set REFLECTION {fx['reflection']} -set REFRACTION {fx['refraction']} "
               f"-set CONTEXTS {a.contexts}")
-    defs = f"-DCSGRT_LUT_TILE_MAX={a.lut_tile_max}" if a.lut_tile_max != 36 else ""
+    defs = "-DSYNTHESIS -DCSGRT_ECP5_DSP"   # as tools/synth.sh: the multipliers in MULT18X18D tiles
+    if a.lut_tile_max != 36:
+        defs += f" -DCSGRT_LUT_TILE_MAX={a.lut_tile_max}"
     t0 = time.time()
 
     # 1. csgrt_top elaborated with the configuration: the derived module and its ports
