@@ -18,11 +18,12 @@ TEST_SRC   := $(wildcard model/*_test.cpp)
 TEST_OBJ   := $(TEST_SRC:model/%.cpp=$(BUILD)/model/%.o)
 RTL_SRC    := $(wildcard rtl/*.v)
 
-.PHONY: all help deps model render sim sim-run test bench-model lint clean synth
+.PHONY: all help deps model render sim sim-run test bench-model lint clean synth timing-modules
 all: model
 
 # Parameters of the render and simulation targets.
 SCENE  ?= scenes/default.pov
+comma  := ,
 BITS   ?= 24
 TIES   ?= paper
 WIDTH  ?= 320
@@ -49,6 +50,8 @@ help:
 	@echo "make test    run every test; ends with 'N passed, N failed'"
 	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [CONTEXTS=16] [LUT_TILE_MAX=81] [TREE_HEIGHT=7] [FREQ=100] [BAUD=3000000]"
 	@echo "             ULX3S bitstream (yosys, nextpnr-ecp5, ecppack) to out/synth/; docs/fpga.md"
+	@echo "make timing-modules [MODULES=\"csgrt_walker ...\"] [BITS=24] [EFFECTS=shadows,reflection]"
+	@echo "             each module placed and routed alone on the 85F: Fmax and critical path (docs/fpga.md)"
 	@echo "make lint    verilator --lint-only -Wall and yosys synthesis of every RTL module"
 	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
 	@echo "make stability    the paper's hard cases: random transforms x widths x ties x {exact, epsilon}"
@@ -191,6 +194,18 @@ synth: deps
 	    $(if $(LUT_TILE_MAX),--lut-tile-max $(LUT_TILE_MAX)) \
 	    $(if $(TREE_HEIGHT),--tree-height $(TREE_HEIGHT)) \
 	    --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
+
+# Out-of-context timing (a benchmark, not a test; docs/fpga.md "Timing per
+# module"): each module of csgrt_top's configuration placed and routed alone
+# on the 85F, its Fmax and critical path with the RTL lines, minutes per
+# module instead of hours for the whole design.
+# `make timing-modules [MODULES="csgrt_walker ..."] [BITS=24] [EFFECTS=shadows,reflection]`
+TIMING_MODULES ?= csgrt_event_sort csgrt_class_tree csgrt_walker csgrt_camera csgrt_dispatch \
+                  csgrt_hit_prep csgrt_raytree csgrt_spawn csgrt_shade
+timing-modules: deps
+	@python3 tools/module_timing.py $(or $(MODULES),$(TIMING_MODULES)) --bits $(BITS) \
+	    --effects $(if $(filter scene,$(EFFECTS)),shadows$(comma)reflection,$(EFFECTS)) \
+	    --tree-height $(or $(TREE_HEIGHT),7) --lut-tile-max $(or $(LUT_TILE_MAX),81) --freq $(FREQ)
 
 # the board top in Verilator with a UART model (tb/board/), built as the
 # FPGA build is (CSGRT_ECP5_DSP: csgrt_mul in MULT18X18D tiles): the ECP5

@@ -214,7 +214,6 @@ module csgrt_walker #(
     wire          res, fin_hit, la_stall;
     wire          w_out, w_hit, w_dec;
     wire [LB-1:0] w_sleaf;
-    wire [TW-1:0] w_t;
     wire [OW-1:0] w_rec;
     wire          sk_ready;
     // The clock enable of the walker, its tree and (through ev_pop_o and
@@ -356,11 +355,15 @@ module csgrt_walker #(
     wire         tok_surf  = t_later ? pb_surf_q : (!t_skip && border);
     wire         grp_found = (t_later && gf_found_q) || tok_surf;      // with this token
     wire [LB-1:0] grp_leaf = (t_later && gf_found_q) ? gf_leaf_q : t_leaf;
-    reg  [TW-1:0] pend_t_q;
     reg  [OW-1:0] pend_rec_q;
     wire         obs      = live_tok && !t_probe && pend_q;            // a token after a pending hit
-    wire         pend_same = t_t == pend_t_q;
-    wire         pend_surf = obs && pend_same && pb_surf_q;            // t_later: same t, after the hit
+    // the token lies at the pending hit's t: the token that parked the hit
+    // did, and every observed token since (else the record would have
+    // left), so this one does exactly when it lies at its predecessor's t:
+    // its `later` bit. (Comparing t with the hit's, BITS-1 bits, was the
+    // walker's out-of-context critical path into the output skid's enable.)
+    wire         pend_same = t_later;
+    wire         pend_surf = obs && pend_same && pb_surf_q;            // same t, after the hit
     wire         p_out    = obs && (pend_surf || !pend_same || t_last);
     // the walk's hit waits (never on the ray's last token: its group ends
     // there, and the next token at the output is another ray's)
@@ -378,10 +381,7 @@ module csgrt_walker #(
                 gf_found_q <= grp_found;
                 gf_leaf_q  <= grp_leaf;
             end
-            if (w_park) begin
-                pend_t_q   <= w_t;
-                pend_rec_q <= w_rec;
-            end
+            if (w_park) pend_rec_q <= w_rec;
         end
         if (!rst_ni) pend_q <= 1'b0;
         else if (ce) begin
@@ -488,7 +488,6 @@ module csgrt_walker #(
                 assign w_hit    = run_out || out_hit;
                 assign w_dec    = run_out ? run_dec : (grp_found || t_last);
                 assign w_sleaf  = run_out ? (found_now ? found_leaf : la_leaf_q) : grp_leaf;
-                assign w_t      = run_out ? la_t_q : t_t;
                 assign la_stall = need_q;
                 // flags after the run: before the token that ends it, or
                 // after the member that ends it
@@ -544,7 +543,6 @@ module csgrt_walker #(
                 assign w_hit    = res_hit;
                 assign w_dec    = grp_found || t_last;
                 assign w_sleaf  = grp_leaf;
-                assign w_t      = t_t;
                 assign la_stall = 1'b0;
                 assign w_rec = {res_hit ? fa_hit : {NS{1'b0}}, lb_run, rec_base};
                 assign flags_after_o = rec_o[OW-1 -: NS];
@@ -563,7 +561,6 @@ module csgrt_walker #(
             assign w_hit         = res_hit;
             assign w_dec         = grp_found || t_last;
             assign w_sleaf       = grp_leaf;
-            assign w_t           = t_t;
             assign la_stall      = 1'b0;
             assign q_valid_o     = 1'b0;
             assign q_t_o         = {TW{1'b0}};

