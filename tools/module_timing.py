@@ -54,6 +54,11 @@ def run(cmd, log, timeout=None):
         sys.exit(f"module_timing: {cmd[0]} failed (exit {rc}), see {log}:\n" + "\n".join(tail))
 
 
+def base_name(rtlil_name):
+    """csgrt_fifo of '$paramod\\csgrt_fifo\\WIDTH=..', '$paramod$<hash>\\csgrt_fifo' or '\\csgrt_fifo'."""
+    return next((p for p in rtlil_name.split("\\")[1:] if "=" not in p), rtlil_name)
+
+
 def module_ports(il_path, module):
     """[(name, direction, width)] of `module` in an RTLIL file, in port order."""
     ports, inside = [], False
@@ -177,10 +182,10 @@ def time_module(a, module):
                 f"hierarchy -top csgrt_top\nwrite_rtlil {rel('elab.il')}\n")
     run([yosys, "-q", "-s", rel("elab.ys")], os.path.join(ROOT, rel("elab.log")))
     names = [l.split()[1] for l in open(os.path.join(ROOT, rel("elab.il"))) if l.startswith("module ")]
-    cands = [n for n in names if n == "\\" + module or n.endswith("\\" + module)]
+    cands = [n for n in names if base_name(n) == module]
     if not cands:
         sys.exit(f"module_timing: no instance of {module} in csgrt_top with this configuration "
-                 f"(modules: {', '.join(sorted(set(n.split(chr(92))[-1] for n in names)))})")
+                 f"(modules: {', '.join(sorted(set(base_name(n) for n in names)))})")
     if a.instance >= len(cands):
         sys.exit(f"module_timing: {module} has {len(cands)} variants here; --instance takes 0..{len(cands) - 1}")
     name = cands[a.instance]
