@@ -316,7 +316,17 @@ module csgrt_hit_prep #(
     csgrt_fifo #(.WIDTH(FAST_W), .DEPTH(32)) u_fast (
         .clk_i, .rst_ni, .valid_i(take), .ready_o(fast_ready), .data_i(s_fast_i),
         .valid_o(fast_valid), .ready_i(m_valid_o && m_ready_i), .data_o(m_fast_o));
-    wire unused_fast = ^{fast_valid, fast_ready};   // in step with the wide queue
+    wire unused_fast = fast_ready;   // in step with the wide queue, which is full first
+`ifndef SYNTHESIS
+    // the two queues hold the same records: a simulation stops if not
+    always @(posedge clk_i)
+        if (rst_ni && ((m_valid_o && !fast_valid) || (fifo_ready && !fast_ready))) begin
+            $display("ERROR %m: the narrow record queue is out of step with the wide one");
+            $fatal;
+        end
+`else
+    wire unused_fast_valid = fast_valid;
+`endif
 
     wire [YW-1:0] o_y = out_w[0 +: YW];
     assign m_p_o         = o_y[XW +: 3*B];
