@@ -243,7 +243,7 @@ module csgrt_event_sort #(
         for (j = 0; j < N; j = j + 1) begin : g_cell
             reg  [DW-1:0] fill_q, drain_q;
             wire [DW-1:0] cur  = fill_q;
-            wire          here = occ_q[j] && !handover;   // j < base_cnt
+            wire          here = base_occ[j];           // j < base_cnt
             wire [KW-1:0] k    = `CSGRT_KEY(cur);
             wire [DW-1:0] ins;                 // the cell's next word
             assign lt_a[j] = here && (s1_n_q == 2'd0 || k < key_a);   // no event: a = +inf
