@@ -248,6 +248,7 @@ module csgrt_walker #(
     wire [NS-1:0] fl_tok = probe ? gfl_q : fl_cur;   // the flags the token is classified with
     wire          skip   = !ev_valid_i || (fl_tok[ev_slot_i] == ev_entering_i);
     wire          toggle = !skip && !probe;   // the token crosses (flag toggled)
+    wire          crossing = issue && !probe && ev_valid_i;   // a walk token of an event
     wire          last   = !probe && (!ev_valid_i || ev_last_i);
     wire          in_fl_next;                 // a token of bank !seq_q in flight
     wire          load   = ce && !act_q && ray_valid_i && !in_fl_next;
@@ -300,9 +301,15 @@ module csgrt_walker #(
                     if (!later) gfl_q <= fl_cur;
                 end
             end
-            if (issue && toggle) begin
-                if (seq_q) fl1_q[ev_slot_i] <= !fl1_q[ev_slot_i];
-                else       fl0_q[ev_slot_i] <= !fl0_q[ev_slot_i];
+            // The crossing leaves the flag at the event's side whether it
+            // toggles it (the flag was !entering) or is skipped as invalid
+            // (it was entering already), so the bank is written with
+            // ev_entering_i and its write needs no read of the flag: the
+            // 128-to-1 choice of fl_tok[ev_slot_i] stays off the bank's loop
+            // (it was the walker's critical path on the FPGA, docs/fpga.md).
+            if (crossing) begin
+                if (seq_q) fl1_q[ev_slot_i] <= ev_entering_i;
+                else       fl0_q[ev_slot_i] <= ev_entering_i;
             end
             if (load) begin
                 gv_q <= 1'b0;
