@@ -15,13 +15,28 @@
 //   word per clock; capacity DEPTH + 1 (DEPTH in the RAM, 1 in the output
 //   register). Same valid/ready handshake; ready_o and valid_o are registers
 //   or functions of registers only, and nothing is lost under back-pressure.
+// HEAD_REG = 1 adds a fabric register after the RAM's read register and
+// takes the consumer's ready off every enable but one flip-flop's: the
+// DP16KD's read port takes 5.6 ns from clock to output in nextpnr's model
+// (without its own output register, which yosys does not infer), more than
+// half of a 100 MHz clock before the consumer's logic starts, and an enable
+// that waits for the consumer's ready (the RAM's read enable, or a wide
+// register's) reaches across the die from the consumer's decision. Here the
+// RAM reads when its read register is empty and the read register moves to
+// the head when the head is empty, both decided by registers; ready_i only
+// clears head_valid. The cost is throughput: one word every 2 clocks at
+// most (the head is refilled the clock after it is taken), latency 3
+// clocks, capacity DEPTH + 2. For consumers that take a word every 2 clocks
+// or less often: csgrt_hit_prep's record queue (a record per hit, II clocks
+// apart), read by the ray tree's spawn decision.
 // The RAM reads only entries written at an earlier edge and writes only
 // entries that are not about to be read (the read pointer trails the write
 // pointer and a full RAM takes no write), so a read never meets a write at
 // the same address: `no_rw_check` tells yosys not to add collision logic.
 module csgrt_fifo_block #(
     parameter WIDTH = 8,    // payload bits
-    parameter DEPTH = 16    // RAM entries, a power of two >= 2
+    parameter DEPTH = 16,   // RAM entries, a power of two >= 2
+    parameter HEAD_REG = 0  // 1: the head word in a fabric register, a word per 2 clocks (above)
 ) (
     input  wire             clk_i,
     input  wire             rst_ni,    // synchronous, active low
@@ -37,39 +52,66 @@ module csgrt_fifo_block #(
     (* ram_style = "block", no_rw_check *)
     reg [WIDTH-1:0] mem_q [0:DEPTH-1];
     reg [AW:0]      wr_q, rd_q;   // one extra bit tells full from empty
-    reg [WIDTH-1:0] head_q;       // the oldest word, out of the RAM's read port
-    reg             head_valid_q;
+    reg [WIDTH-1:0] rd_data_q;    // the RAM's read register: the oldest word read
+    reg             rd_valid_q;
 
     wire ram_empty = (wr_q == rd_q);
     wire ram_full  = (wr_q[AW-1:0] == rd_q[AW-1:0]) && (wr_q[AW] != rd_q[AW]);
     wire write     = valid_i && !ram_full;
-    // the head register is free, or its word leaves at this edge
-    wire load      = !ram_empty && (!head_valid_q || ready_i);
+    wire rd_free;                 // the read register is free, or its word moves on at this edge
+    wire load      = !ram_empty && rd_free;
 
     assign ready_o = !ram_full;
-    assign valid_o = head_valid_q;
-    assign data_o  = head_q;
 
     always @(posedge clk_i) begin
         if (write) mem_q[wr_q[AW-1:0]] <= data_i;
-        if (load)  head_q <= mem_q[rd_q[AW-1:0]];
+        if (load)  rd_data_q <= mem_q[rd_q[AW-1:0]];
     end
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
-            wr_q         <= {(AW+1){1'b0}};
-            rd_q         <= {(AW+1){1'b0}};
-            head_valid_q <= 1'b0;
+            wr_q <= {(AW+1){1'b0}};
+            rd_q <= {(AW+1){1'b0}};
         end else begin
             if (write) wr_q <= wr_q + 1'b1;
-            if (load) begin
-                rd_q         <= rd_q + 1'b1;
-                head_valid_q <= 1'b1;
-            end else if (ready_i) begin
-                head_valid_q <= 1'b0;
-            end
+            if (load)  rd_q <= rd_q + 1'b1;
         end
     end
+
+    generate
+        if (HEAD_REG != 0) begin : g_head_reg
+            // the head in the fabric, loaded from the read register when
+            // empty: no enable here depends on ready_i
+            reg [WIDTH-1:0] head_q;
+            reg             head_valid_q;
+            wire head_load = rd_valid_q && !head_valid_q;
+            assign rd_free = !rd_valid_q;
+            assign valid_o = head_valid_q;
+            assign data_o  = head_q;
+            always @(posedge clk_i) if (head_load) head_q <= rd_data_q;
+            always @(posedge clk_i) begin
+                if (!rst_ni) begin
+                    rd_valid_q   <= 1'b0;
+                    head_valid_q <= 1'b0;
+                end else begin
+                    if (load)           rd_valid_q <= 1'b1;
+                    else if (head_load) rd_valid_q <= 1'b0;
+                    if (head_load)      head_valid_q <= 1'b1;
+                    else if (ready_i)   head_valid_q <= 1'b0;
+                end
+            end
+        end else begin : g_head_ram
+            // the head is the read register itself
+            assign rd_free = !rd_valid_q || ready_i;
+            assign valid_o = rd_valid_q;
+            assign data_o  = rd_data_q;
+            always @(posedge clk_i) begin
+                if (!rst_ni)      rd_valid_q <= 1'b0;
+                else if (load)    rd_valid_q <= 1'b1;
+                else if (ready_i) rd_valid_q <= 1'b0;
+            end
+        end
+    endgenerate
 
     initial begin
         if (DEPTH < 2 || (1 << AW) != DEPTH) begin

@@ -300,8 +300,11 @@ module csgrt_hit_prep #(
         .clk_i, .rst_ni, .valid_i(x4_valid && last), .ready_o(en), .data_i({sc, x4_z}),
         .valid_o(out_valid), .ready_i(m_ready_i), .data_o(out_w));
     wire          rec_valid;
-    // the record is about a thousand bits wide at 24 bits: block RAM, not LUT RAM
-    csgrt_fifo_block #(.WIDTH(REC_W), .DEPTH(16)) u_rec (
+    // the record is about a thousand bits wide at 24 bits: block RAM, not LUT
+    // RAM; its head in a fabric register (HEAD_REG), because the ray tree's
+    // spawn decision starts from the record's material fields and the block
+    // RAM's read port alone took 5.8 of a 100 MHz clock's 10 ns (docs/fpga.md)
+    csgrt_fifo_block #(.WIDTH(REC_W), .DEPTH(16), .HEAD_REG(1)) u_rec (
         .clk_i, .rst_ni, .valid_i(take), .ready_o(fifo_ready), .data_i(s_rec_i),
         .valid_o(rec_valid), .ready_i(m_valid_o && m_ready_i), .data_o(m_rec_o));
     assign m_valid_o = out_valid && rec_valid;   // rec_valid always holds with out_valid
@@ -311,7 +314,7 @@ module csgrt_hit_prep #(
     // context, kind, light and hit bit, which address its context memories)
     // waits in a LUT-RAM queue, read straight from its registered pointer.
     // Pushed and popped with the wide one; its 32 entries outnumber the wide
-    // queue's 17, so it is never the one that is full.
+    // queue's 18, so it is never the one that is full.
     wire fast_valid, fast_ready;
     csgrt_fifo #(.WIDTH(FAST_W), .DEPTH(32)) u_fast (
         .clk_i, .rst_ni, .valid_i(take), .ready_o(fast_ready), .data_i(s_fast_i),

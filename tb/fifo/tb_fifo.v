@@ -1,7 +1,7 @@
 `default_nettype none
 // tb_fifo — Verilator top for tb_fifo.cpp: csgrt_fifo (LUT RAM, latency 1)
-// and csgrt_fifo_block (block RAM, latency 2), side by side with their own
-// handshakes, WIDTH bits wide and DEPTH entries deep.
+// and csgrt_fifo_block (block RAM, latency 2; with HEAD_REG, latency 3), side
+// by side with their own handshakes, WIDTH bits wide and DEPTH entries deep.
 module tb_fifo #(
     parameter WIDTH = 40,
     parameter DEPTH = 8
@@ -21,7 +21,14 @@ module tb_fifo #(
     input  wire [WIDTH-1:0] blk_data_i,
     output wire             blk_valid_o,
     input  wire             blk_ready_i,
-    output wire [WIDTH-1:0] blk_data_o
+    output wire [WIDTH-1:0] blk_data_o,
+    // csgrt_fifo_block with HEAD_REG = 1
+    input  wire             reg_valid_i,
+    output wire             reg_ready_o,
+    input  wire [WIDTH-1:0] reg_data_i,
+    output wire             reg_valid_o,
+    input  wire             reg_ready_i,
+    output wire [WIDTH-1:0] reg_data_o
 );
     csgrt_fifo #(.WIDTH(WIDTH), .DEPTH(DEPTH)) u_lut (
         .clk_i, .rst_ni, .valid_i(lut_valid_i), .ready_o(lut_ready_o), .data_i(lut_data_i),
@@ -29,5 +36,8 @@ module tb_fifo #(
     csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH)) u_blk (
         .clk_i, .rst_ni, .valid_i(blk_valid_i), .ready_o(blk_ready_o), .data_i(blk_data_i),
         .valid_o(blk_valid_o), .ready_i(blk_ready_i), .data_o(blk_data_o));
+    csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH), .HEAD_REG(1)) u_reg (
+        .clk_i, .rst_ni, .valid_i(reg_valid_i), .ready_o(reg_ready_o), .data_i(reg_data_i),
+        .valid_o(reg_valid_o), .ready_i(reg_ready_i), .data_o(reg_data_o));
 endmodule
 `default_nettype wire
