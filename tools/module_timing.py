@@ -186,10 +186,13 @@ def elaborate(a):
 def time_module(a, module):
     yosys, nextpnr = a.yosys, a.nextpnr
     out = os.path.join(a.out, f"{module}_{a.config}")
-    os.makedirs(os.path.join(ROOT, out), exist_ok=True)
     rel = lambda f: os.path.join(out, f)
     if a.report_only:
+        if not os.path.exists(os.path.join(ROOT, rel("report.json"))):
+            sys.exit(f"module_timing: no report of {module} for this configuration in {out}/ "
+                     f"(run without --report-only first, or give the --out of that run)")
         return summarize(os.path.join(ROOT, out), a, module, 0, 0)
+    os.makedirs(os.path.join(ROOT, out), exist_ok=True)
     t0 = time.time()
 
     # 1. the derived module in csgrt_top's elaboration, and its ports
