@@ -15,20 +15,24 @@
 //   word per clock; capacity DEPTH + 1 (DEPTH in the RAM, 1 in the output
 //   register). Same valid/ready handshake; ready_o and valid_o are registers
 //   or functions of registers only, and nothing is lost under back-pressure.
-// HEAD_REG = 1 adds a fabric register after the RAM's read register and
-// takes the consumer's ready off every enable but one flip-flop's: the
+// HEAD_REG adds a fabric register after the RAM's read register: the
 // DP16KD's read port takes 5.6 ns from clock to output in nextpnr's model
 // (without its own output register, which yosys does not infer), more than
-// half of a 100 MHz clock before the consumer's logic starts, and an enable
-// that waits for the consumer's ready (the RAM's read enable, or a wide
-// register's) reaches across the die from the consumer's decision. Here the
-// RAM reads when its read register is empty and the read register moves to
-// the head when the head is empty, both decided by registers; ready_i only
-// clears head_valid. The cost is throughput: one word every 2 clocks at
-// most (the head is refilled the clock after it is taken), latency 3
-// clocks, capacity DEPTH + 2. For consumers that take a word every 2 clocks
-// or less often: csgrt_hit_prep's record queue (a record per hit, II clocks
-// apart), read by the ray tree's spawn decision.
+// half of a 100 MHz clock before the consumer's logic starts; the fabric
+// register's takes 0.5 ns. Latency 3 clocks, capacity DEPTH + 2.
+//   HEAD_REG = 1: a word per clock; the RAM's read enable and the head's
+//     enable follow ready_i, as in the plain queue. For consumers whose
+//     ready is a register or nearly (csgrt_spawn's queues, popped at fixed
+//     phases).
+//   HEAD_REG = 2: every enable decided by registers: the RAM reads when its
+//     read register is empty, the head loads when it is empty, and ready_i
+//     only clears head_valid. An enable that waits for the consumer's ready
+//     reaches from the consumer's decision across the die to the RAM or to
+//     a wide register; the price is one word every 2 clocks at most (the
+//     head is refilled the clock after it is taken). For consumers that
+//     take a word every 2 clocks or less often and decide late in the clock:
+//     csgrt_hit_prep's record queue (a record per hit, II clocks apart,
+//     taken by the ray tree's event selection).
 // The RAM reads only entries written at an earlier edge and writes only
 // entries that are not about to be read (the read pointer trails the write
 // pointer and a full RAM takes no write), so a read never meets a write at
@@ -36,7 +40,7 @@
 module csgrt_fifo_block #(
     parameter WIDTH = 8,    // payload bits
     parameter DEPTH = 16,   // RAM entries, a power of two >= 2
-    parameter HEAD_REG = 0  // 1: the head word in a fabric register, a word per 2 clocks (above)
+    parameter HEAD_REG = 0  // 1, 2: the head word in a fabric register (above)
 ) (
     input  wire             clk_i,
     input  wire             rst_ni,    // synchronous, active low
@@ -81,11 +85,12 @@ module csgrt_fifo_block #(
     generate
         if (HEAD_REG != 0) begin : g_head_reg
             // the head in the fabric, loaded from the read register when
-            // empty: no enable here depends on ready_i
+            // it is free (HEAD_REG 2: when it is empty, so that no enable
+            // here depends on ready_i)
             reg [WIDTH-1:0] head_q;
             reg             head_valid_q;
-            wire head_load = rd_valid_q && !head_valid_q;
-            assign rd_free = !rd_valid_q;
+            wire head_load = rd_valid_q && (!head_valid_q || (HEAD_REG == 1 && ready_i));
+            assign rd_free = !rd_valid_q || (HEAD_REG == 1 && head_load);
             assign valid_o = head_valid_q;
             assign data_o  = head_q;
             always @(posedge clk_i) if (head_load) head_q <= rd_data_q;
@@ -114,8 +119,8 @@ module csgrt_fifo_block #(
     endgenerate
 
     initial begin
-        if (DEPTH < 2 || (1 << AW) != DEPTH) begin
-            $display("%m: DEPTH (%0d) must be a power of two >= 2", DEPTH);
+        if (DEPTH < 2 || (1 << AW) != DEPTH || HEAD_REG < 0 || HEAD_REG > 2) begin
+            $display("%m: DEPTH (%0d) must be a power of two >= 2, HEAD_REG (%0d) 0, 1 or 2", DEPTH, HEAD_REG);
             $finish;
         end
     end

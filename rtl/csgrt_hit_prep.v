@@ -46,7 +46,6 @@ module csgrt_hit_prep #(
     parameter MAX_LIGHTS = 8,
     parameter DIST_W     = 27,    // shadow ray distance / t limit (unsigned, F fraction bits)
     parameter REC_W      = 8,     // the record waiting beside the pipeline
-    parameter FAST_W     = 1,     // a narrow record beside it, out of LUT RAM (see u_fast)
     parameter MAX_CROSS  = 16,    // crossings a shadow ray follows (model: kMaxShadowCrossings)
     parameter II         = 1      // running clocks per record: 1 or 3
 ) (
@@ -72,12 +71,10 @@ module csgrt_hit_prep #(
     input  wire [15:0]               s_filter_i,
     input  wire [15:0]               s_reflection_i,
     input  wire [REC_W-1:0]          s_rec_i,
-    input  wire [FAST_W-1:0]         s_fast_i,
     // results
     output wire                      m_valid_o,
     input  wire                      m_ready_i,
     output wire [REC_W-1:0]          m_rec_o,
-    output wire [FAST_W-1:0]         m_fast_o,
     output wire [3*BITS-1:0]         m_p_o,
     output wire                      m_in_range_o,
     output wire [3*13-1:0]           m_bg_o,          // colour ray: rnd(w background), saturated at 4095
@@ -301,35 +298,18 @@ module csgrt_hit_prep #(
         .valid_o(out_valid), .ready_i(m_ready_i), .data_o(out_w));
     wire          rec_valid;
     // the record is about a thousand bits wide at 24 bits: block RAM, not LUT
-    // RAM; its head in a fabric register (HEAD_REG), because the ray tree's
-    // spawn decision starts from the record's material fields and the block
-    // RAM's read port alone took 5.8 of a 100 MHz clock's 10 ns (docs/fpga.md)
-    csgrt_fifo_block #(.WIDTH(REC_W), .DEPTH(16), .HEAD_REG(1)) u_rec (
+    // RAM; its head in a fabric register, every enable from registers
+    // (HEAD_REG 2), because the ray tree's spawn decision starts from the
+    // record's material fields (the block RAM's read port alone took 5.8 of
+    // a 100 MHz clock's 10 ns) and its event selection decides the pop late
+    // in the clock (docs/fpga.md); a record per hit needs no more than a
+    // word every 2 clocks. (Until the head register, the ray's context,
+    // kind, light and hit bit, which address the ray tree's context memories,
+    // waited in a LUT-RAM queue of their own beside this one.)
+    csgrt_fifo_block #(.WIDTH(REC_W), .DEPTH(16), .HEAD_REG(2)) u_rec (
         .clk_i, .rst_ni, .valid_i(take), .ready_o(fifo_ready), .data_i(s_rec_i),
         .valid_o(rec_valid), .ready_i(m_valid_o && m_ready_i), .data_o(m_rec_o));
     assign m_valid_o = out_valid && rec_valid;   // rec_valid always holds with out_valid
-    // The block RAM's read port is slow (DP16KD without its output register:
-    // 5.6 ns clock to output in nextpnr's model), which is a poor start for
-    // the consumer's decisions: the narrow record (csgrt_raytree: the ray's
-    // context, kind, light and hit bit, which address its context memories)
-    // waits in a LUT-RAM queue, read straight from its registered pointer.
-    // Pushed and popped with the wide one; its 32 entries outnumber the wide
-    // queue's 18, so it is never the one that is full.
-    wire fast_valid, fast_ready;
-    csgrt_fifo #(.WIDTH(FAST_W), .DEPTH(32)) u_fast (
-        .clk_i, .rst_ni, .valid_i(take), .ready_o(fast_ready), .data_i(s_fast_i),
-        .valid_o(fast_valid), .ready_i(m_valid_o && m_ready_i), .data_o(m_fast_o));
-    wire unused_fast = fast_ready;   // in step with the wide queue, which is full first
-`ifndef SYNTHESIS
-    // the two queues hold the same records: a simulation stops if not
-    always @(posedge clk_i)
-        if (rst_ni && ((m_valid_o && !fast_valid) || (fifo_ready && !fast_ready))) begin
-            $display("ERROR %m: the narrow record queue is out of step with the wide one");
-            $fatal;
-        end
-`else
-    wire unused_fast_valid = fast_valid;
-`endif
 
     wire [YW-1:0] o_y = out_w[0 +: YW];
     assign m_p_o         = o_y[XW +: 3*B];

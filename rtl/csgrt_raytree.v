@@ -240,8 +240,6 @@ module csgrt_raytree #(
     wire               hp_valid;
     wire               hp_ready;
     wire [TREC_W-1:0]  hp_rec;
-    localparam FAST_W = 2 + CB + KW;           // {hit, light, ctx, shadow}: u_prep's LUT-RAM record
-    wire [FAST_W-1:0]  hp_fast;
     wire [3*B-1:0]     hp_p;
     wire               hp_in_range;
     wire [38:0]        hp_bg;
@@ -254,8 +252,7 @@ module csgrt_raytree #(
     wire [47:0]        tr_atten  = tr_rec_i[1 + CB + KW + 52 +: 48];
     wire [4:0]         tr_cross  = tr_rec_i[1 + CB + KW + 100 +: 5];
     wire [DIST_W-1:0]  tr_tlimit = tr_rec_i[1 + CB + KW + 105 +: DIST_W];
-    csgrt_hit_prep #(.BITS(B), .MAX_LIGHTS(MAX_LIGHTS), .DIST_W(DIST_W), .REC_W(TREC_W), .FAST_W(FAST_W),
-                     .II(II)) u_prep (
+    csgrt_hit_prep #(.BITS(B), .MAX_LIGHTS(MAX_LIGHTS), .DIST_W(DIST_W), .REC_W(TREC_W), .II(II)) u_prep (
         .clk_i, .rst_ni, .background_i, .light_color_i,
         .s_valid_i (tr_valid_i), .s_ready_o (tr_ready_o),
         .s_shadow_i (tr_shadow), .s_light_i (tr_light), .s_w_i (tr_w), .s_atten_i (tr_atten),
@@ -265,8 +262,7 @@ module csgrt_raytree #(
         .s_reflection_i (tr_mat_i[M_REFL +: 16]),
         .s_rec_i ({tr_ior_to_i, tr_ior_from_i, tr_t_i, tr_hit_i, tr_flags_after_i, tr_run_i, tr_flags_near_i, tr_mat_i,
                    tr_coef_i, tr_o_i, tr_d_i, tr_rec_i}),
-        .s_fast_i ({tr_hit_i, tr_rec_i[0 +: 1 + CB + KW]}),
-        .m_valid_o (hp_valid), .m_ready_i (hp_ready), .m_rec_o (hp_rec), .m_fast_o (hp_fast),
+        .m_valid_o (hp_valid), .m_ready_i (hp_ready), .m_rec_o (hp_rec),
         .m_p_o (hp_p), .m_in_range_o (hp_in_range), .m_bg_o (hp_bg), .m_w_r_o (hp_w_r), .m_w_t_o (hp_w_t),
         .m_sh_ends_o (hp_sh_ends), .m_sh_color_o (hp_sh_color), .m_sh_atten_o (hp_sh_atten),
         .m_sh_tlimit_o (hp_sh_tlimit));
@@ -278,19 +274,17 @@ module csgrt_raytree #(
     wire [NS-1:0]     h_near   = hp_rec[REC_W + 16*B + MAT_W +: NS];
     wire [RUN_W-1:0]  h_run    = hp_rec[REC_W + 16*B + MAT_W + NS +: RUN_W];
     wire [NS-1:0]     h_after  = hp_rec[REC_W + 16*B + MAT_W + NS + RUN_W +: NS];
-    // the ray's context, kind, light and hit bit from the LUT-RAM copy (u_prep)
-    wire              h_hit    = hp_fast[1 + CB + KW];
+    wire              h_hit    = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W];
     wire [TW-1:0]     h_t      = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 +: TW];
     wire [15:0]       h_ior_from = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 + TW +: 16];
     wire [15:0]       h_ior_to   = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 + TW + 16 +: 16];
-    wire              h_shadow = hp_fast[0];
-    wire [CB-1:0]     h_ctx    = hp_fast[1 +: CB];
-    wire [KW-1:0]     h_light  = hp_fast[1 + CB +: KW];
+    wire              h_shadow = h_rec[0];
+    wire [CB-1:0]     h_ctx    = h_rec[1 +: CB];
+    wire [KW-1:0]     h_light  = h_rec[1 + CB +: KW];
     wire [47:0]       h_w      = h_rec[1 + CB + KW +: 48];
     wire [3:0]        h_depth  = h_rec[1 + CB + KW + 48 +: 4];
     wire [4:0]        h_cross  = h_rec[1 + CB + KW + 100 +: 5];
-    wire unused_hp = ^{h_rec[REC_W-1 -: DIST_W], h_rec[1 + CB + KW + 52 +: 48],
-                       h_rec[0 +: 1 + CB + KW], hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W]};   // (hp_fast's copies)
+    wire unused_hp = ^{h_rec[REC_W-1 -: DIST_W], h_rec[1 + CB + KW + 52 +: 48]};
 
     // contributions of shaded rays
     wire              ct_valid;

@@ -515,13 +515,17 @@ module csgrt_spawn #(
             default: gh_gj = gh_g_q[2*GW +: GW];
         endcase
     end
-    // g waits for L in a queue
+    // g waits for L in a queue. Its head in a fabric register (HEAD_REG 1:
+    // the block RAM's read port took 5.6 ns of the path into the divider's
+    // first stage, docs/fpga.md); read at the square root's output, long
+    // after the push, and popped at a fixed phase (a register)
     wire [3*GW-1:0] qg_g;
     wire            qg_pop;
-    wire            unused_qg_ready, unused_qg_valid;
-    csgrt_fifo_block #(.WIDTH(3 * GW), .DEPTH(CTX)) u_q_g (
+    wire            qg_valid;
+    wire            unused_qg_ready;
+    csgrt_fifo_block #(.WIDTH(3 * GW), .DEPTH(CTX), .HEAD_REG(1)) u_q_g (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(acc_done_q), .ready_o(unused_qg_ready),
-        .data_i(g_vec), .valid_o(unused_qg_valid), .ready_i(qg_pop), .data_o(qg_g));
+        .data_i(g_vec), .valid_o(qg_valid), .ready_i(qg_pop), .data_o(qg_g));
 
     // NS: the sum of squares (< 3 * 16^2 * 2^(2F) < 4^SQ)
     localparam GGW = 2 * GW;
@@ -573,6 +577,16 @@ module csgrt_spawn #(
         if (nq_valid) lh_len_q <= {2'b00, nq_root} + {{(NLW-1){1'b0}}, 1'b1};
     end
     assign qg_pop = lh_valid_q && (lh_ph_q == 2'd2);
+`ifndef SYNTHESIS
+    // the queue is read at fixed times: a simulation stops if its head is not there
+    always @(posedge clk_i)
+        if (rst_ni && lh_valid_q && !qg_valid) begin
+            $display("ERROR %m: g's queue read before its head is valid");
+            $fatal;
+        end
+`else
+    wire unused_qg_valid = qg_valid;
+`endif
     reg [GW-1:0] lh_gj;
     always @* begin
         case (lh_ph_q)

@@ -1,7 +1,7 @@
 `default_nettype none
 // tb_fifo — Verilator top for tb_fifo.cpp: csgrt_fifo (LUT RAM, latency 1)
-// and csgrt_fifo_block (block RAM, latency 2; with HEAD_REG, latency 3), side
-// by side with their own handshakes, WIDTH bits wide and DEPTH entries deep.
+// and csgrt_fifo_block (block RAM, latency 2; with HEAD_REG 1 and 2, latency
+// 3), side by side with their own handshakes, WIDTH bits wide and DEPTH entries deep.
 module tb_fifo #(
     parameter WIDTH = 40,
     parameter DEPTH = 8
@@ -23,12 +23,19 @@ module tb_fifo #(
     input  wire             blk_ready_i,
     output wire [WIDTH-1:0] blk_data_o,
     // csgrt_fifo_block with HEAD_REG = 1
-    input  wire             reg_valid_i,
-    output wire             reg_ready_o,
-    input  wire [WIDTH-1:0] reg_data_i,
-    output wire             reg_valid_o,
-    input  wire             reg_ready_i,
-    output wire [WIDTH-1:0] reg_data_o
+    input  wire             hr1_valid_i,
+    output wire             hr1_ready_o,
+    input  wire [WIDTH-1:0] hr1_data_i,
+    output wire             hr1_valid_o,
+    input  wire             hr1_ready_i,
+    output wire [WIDTH-1:0] hr1_data_o,
+    // csgrt_fifo_block with HEAD_REG = 2
+    input  wire             hr2_valid_i,
+    output wire             hr2_ready_o,
+    input  wire [WIDTH-1:0] hr2_data_i,
+    output wire             hr2_valid_o,
+    input  wire             hr2_ready_i,
+    output wire [WIDTH-1:0] hr2_data_o
 );
     csgrt_fifo #(.WIDTH(WIDTH), .DEPTH(DEPTH)) u_lut (
         .clk_i, .rst_ni, .valid_i(lut_valid_i), .ready_o(lut_ready_o), .data_i(lut_data_i),
@@ -36,8 +43,11 @@ module tb_fifo #(
     csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH)) u_blk (
         .clk_i, .rst_ni, .valid_i(blk_valid_i), .ready_o(blk_ready_o), .data_i(blk_data_i),
         .valid_o(blk_valid_o), .ready_i(blk_ready_i), .data_o(blk_data_o));
-    csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH), .HEAD_REG(1)) u_reg (
-        .clk_i, .rst_ni, .valid_i(reg_valid_i), .ready_o(reg_ready_o), .data_i(reg_data_i),
-        .valid_o(reg_valid_o), .ready_i(reg_ready_i), .data_o(reg_data_o));
+    csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH), .HEAD_REG(1)) u_hr1 (
+        .clk_i, .rst_ni, .valid_i(hr1_valid_i), .ready_o(hr1_ready_o), .data_i(hr1_data_i),
+        .valid_o(hr1_valid_o), .ready_i(hr1_ready_i), .data_o(hr1_data_o));
+    csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH), .HEAD_REG(2)) u_hr2 (
+        .clk_i, .rst_ni, .valid_i(hr2_valid_i), .ready_o(hr2_ready_o), .data_i(hr2_data_i),
+        .valid_o(hr2_valid_o), .ready_i(hr2_ready_i), .data_o(hr2_data_o));
 endmodule
 `default_nettype wire
