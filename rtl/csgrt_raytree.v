@@ -221,9 +221,18 @@ module csgrt_raytree #(
     // (pop_entry_q below). A context's stack is written only while it waits
     // for children and read only while it waits for a pop, never both, so a
     // read never meets a write at the same address (no_rw_check).
+    // A push is written a clock late, from registers (stw_*): the write port
+    // sits in a block RAM anywhere on the die, and the push's address and
+    // data came from the event selection and the context memories in the
+    // same clock (the ray tree's critical path out of context). A context's
+    // pop comes many clocks after its last push (its children are shaded
+    // first), so the late write is never read early.
     localparam SW = RUN_W + NS + 4 + 48 + 6 * B;
     (* ram_style = "block", no_rw_check *)
     reg [SW-1:0]       stack_q [0:P*MAX_DEPTH-1];
+    reg                stw_q;
+    reg [$clog2(P * MAX_DEPTH)-1:0] stw_addr_q;
+    reg [SW-1:0]       stw_data_q;
     // the output buffer
     reg [OB-1:0]       ob_valid_q;
     reg [23:0]         ob_xy_q  [0:OB-1];
@@ -452,14 +461,25 @@ module csgrt_raytree #(
         end
     endfunction
     /* verilator lint_on UNUSEDSIGNAL */
-    always @(posedge clk_i)
+    always @(posedge clk_i) begin
         if (pop_stage) pop_entry_q <= stack_q[stk(pop_ctx, sp_q[pop_ctx] - 1'b1)];
+        if (stw_q) stack_q[stw_addr_q] <= stw_data_q;
+    end
+`ifndef SYNTHESIS
+    // the argument above, checked: a simulation stops if a pop reads an entry still being written
+    always @(posedge clk_i)
+        if (rst_ni && pop_stage && stw_q && stw_addr_q == stk(pop_ctx, sp_q[pop_ctx] - 1'b1)) begin
+            $display("ERROR %m: a stack pop reads an entry whose push is not yet written");
+            $fatal;
+        end
+`endif
 
     wire [38:0] acc_ct = add_sat(acc_q[ct_ctx], ct_contrib);
     wire [38:0] acc_hp = add_sat(acc_q[h_ctx], hp_bg);
     always @(posedge clk_i) begin
         rq_push  <= 1'b0;
         spq_push <= 1'b0;
+        stw_q    <= 1'b0;
         if (!rst_ni) begin
             busy_q     <= {P{1'b0}};
             spawning_q <= {P{1'b0}};
@@ -509,20 +529,23 @@ module csgrt_raytree #(
                         end
                     end
                     K_REFLECT: begin
-                        stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
-                            {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wr_q[ch_user_i], ch_d_i, ch_p_i};
+                        stw_q      <= 1'b1;
+                        stw_addr_q <= stk(ch_user_i, sp_q[ch_user_i]);
+                        stw_data_q <= {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wr_q[ch_user_i], ch_d_i, ch_p_i};
                         sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
                     end
                     K_REFRACT: begin
                         // the transmitted ray: far side, the flags after the crossing (and the look-ahead)
-                        stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
-                            {{RUN_W{1'b0}}, after_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
+                        stw_q      <= 1'b1;
+                        stw_addr_q <= stk(ch_user_i, sp_q[ch_user_i]);
+                        stw_data_q <= {{RUN_W{1'b0}}, after_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
                         sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
                     end
                     K_TIR: begin
                         // total internal reflection: near side, like a reflected ray, with the transmitted weight
-                        stack_q[stk(ch_user_i, sp_q[ch_user_i])] <=
-                            {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
+                        stw_q      <= 1'b1;
+                        stw_addr_q <= stk(ch_user_i, sp_q[ch_user_i]);
+                        stw_data_q <= {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
                         sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
                     end
                     default: ;   // CONTINUE: not asked for
