@@ -406,44 +406,76 @@ module csgrt_walker #(
     genvar g;
     generate
         if (SECONDARY != 0) begin : g_sec
-            // the ray's last LBK valid tokens, most recent at entry 0
+            // the ray's last LBK valid tokens, most recent at entry 0. A
+            // token's crossing waits a clock in a pending entry (pv_q)
+            // before it is shifted in, so that the history's shift is
+            // enabled by a register: whether a token crosses (toggle)
+            // comes from the flag at its slot, a 128-to-1 choice, too late
+            // in the clock to enable LBK * (H + 1 + TW) flip-flops (the
+            // walker's critical path out of context). The history as seen
+            // (eff_*) puts the pending entry in front.
             reg [CB-1:0]     hc_q;             // entries held, 0 .. LBK
             reg [LBK*H-1:0]  hs_q;
             reg [LBK-1:0]    he_q;
             reg [LBK*TW-1:0] ht_q;
+            reg              pv_q;             // the last token crossed: ps, pe, pt not yet shifted in
+            reg [H-1:0]      ps_q;
+            reg              pe_q;
+            reg [TW-1:0]     pt_q;
+            wire [LBK*H-1:0]  eff_s;
+            wire [LBK-1:0]    eff_e;
+            wire [LBK*TW-1:0] eff_t;
+            wire [CB-1:0]     eff_c = (pv_q && {{(32-CB){1'b0}}, hc_q} != LBK) ? hc_q + 1'b1 : hc_q;
+            if (LBK == 1) begin : g_eff_one
+                assign eff_s = pv_q ? ps_q : hs_q;
+                assign eff_e = pv_q ? pe_q : he_q;
+                assign eff_t = pv_q ? pt_q : ht_q;
+            end else begin : g_eff
+                assign eff_s = pv_q ? {hs_q[0 +: (LBK-1)*H], ps_q} : hs_q;
+                assign eff_e = pv_q ? {he_q[0 +: LBK-1], pe_q} : he_q;
+                assign eff_t = pv_q ? {ht_q[0 +: (LBK-1)*TW], pt_q} : ht_q;
+            end
             // the run of the token being issued: the history, same_t against its t
             wire [LBK*H-1:0] run_slot;
             wire [LBK-1:0]   run_ent, run_same;
             for (g = 0; g < LBK; g = g + 1) begin : g_run
-                wire held = {{(32-CB){1'b0}}, hc_q} > g;
-                assign run_slot[g*H +: H] = held ? hs_q[g*H +: H] : {H{1'b0}};
-                assign run_ent[g]         = held && he_q[g];
-                assign run_same[g]        = held && ht_q[g*TW +: TW] == ev_t_i;
+                wire held = {{(32-CB){1'b0}}, eff_c} > g;
+                assign run_slot[g*H +: H] = held ? eff_s[g*H +: H] : {H{1'b0}};
+                assign run_ent[g]         = held && eff_e[g];
+                assign run_same[g]        = held && eff_t[g*TW +: TW] == ev_t_i;
             end
+            wire [RW-1:0] run_now = {eff_c, run_slot, run_ent, run_same};
             // a later member of a tie group carries the run as it stood
             // before the group (the crossings of the group are undone
             // whole, by flags_near)
-            wire [RW-1:0] run_now = {hc_q, run_slot, run_ent, run_same};
             reg  [RW-1:0] grun_q;
             assign tag_in = {later ? grun_q : run_now, tag_base};
             always @(posedge clk_i)
                 if (ce && issue && !probe && !later) grun_q <= run_now;
             wire [NS-1:0] slot_bit = {{(NS-1){1'b0}}, 1'b1} << t_slot;
             wire [NS-1:0] fa_hit   = flags_before ^ slot_bit;   // after the hit's own crossing
-            integer i;
             always @(posedge clk_i) begin
-                if (ce && issue && toggle) begin
-                    for (i = LBK - 1; i > 0; i = i - 1) begin
-                        hs_q[i*H +: H]   <= hs_q[(i-1)*H +: H];
-                        he_q[i]          <= he_q[i-1];
-                        ht_q[i*TW +: TW] <= ht_q[(i-1)*TW +: TW];
+                if (ce) begin
+                    // the pending crossing goes into the history
+                    if (pv_q) begin
+                        hs_q <= eff_s;
+                        he_q <= eff_e;
+                        ht_q <= eff_t;
+                        hc_q <= eff_c;
                     end
-                    hs_q[0 +: H]  <= ev_slot_i;
-                    he_q[0]       <= ev_entering_i;
-                    ht_q[0 +: TW] <= ev_t_i;
-                    if ({{(32-CB){1'b0}}, hc_q} != LBK) hc_q <= hc_q + 1'b1;
+                    // this clock's token: its fields always (an enable from
+                    // registers), whether it crossed as data
+                    pv_q <= issue && toggle;
+                    if (crossing) begin
+                        ps_q <= ev_slot_i;
+                        pe_q <= ev_entering_i;
+                        pt_q <= ev_t_i;
+                    end
                 end
-                if ((ce && load) || !rst_ni) hc_q <= {CB{1'b0}};
+                if ((ce && load) || !rst_ni) begin
+                    hc_q <= {CB{1'b0}};
+                    pv_q <= 1'b0;
+                end
             end
             // the hit token's run (misses: 0) rides in the record
             wire [RW-1:0] lb_run = res_hit ? tg[GW-1:BGW] : {RW{1'b0}};
