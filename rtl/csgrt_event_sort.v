@@ -41,12 +41,9 @@
 // Double buffering: when the fill bank holds a complete ray (its last leaf
 // inserted) and the drain bank is free, the fill bank moves to the drain
 // bank in one clock, and the next ray's first leaf may go into the emptied
-// fill bank in that same clock. The drain bank stays as it was loaded; the
-// head event and the one after it wait in two registers, refilled on a pop
-// from the cell a read index names (a shift register of 128 cells cost a
-// LUT per bit for its shift and put the pop on every cell's enable, the
-// sorter's critical path out of context). The walker sees the ray (flags,
-// payload, event count) and the smallest event, pops events one per clock and releases the ray with ray_done_i (it may do
+// fill bank in that same clock. The drain bank is a shift register: the
+// walker sees the ray (flags, payload, event count) and the smallest event,
+// pops events one per clock and releases the ray with ray_done_i (it may do
 // so before popping them all). While the fill bank holds a complete ray and
 // the drain bank is busy, the input stage fills and then ready_o goes low.
 //
@@ -274,10 +271,17 @@ module csgrt_event_sort #(
                              lt_b[j-2] ? s1_b_q :
                                          fill_w[j-2];
             end
-            // the drain bank takes the fill bank whole and is only read
+            // the drain bank shifts towards cell 0 on a pop
+            wire [DW-1:0] next_drain;
+            if (j == N - 1) begin : g_end
+                assign next_drain = {DW{1'b0}};
+            end else begin : g_shift
+                assign next_drain = drain_w[j+1];
+            end
             always @(posedge clk_i) begin
                 if (s1_adv) fill_q <= ins;
                 if (handover) drain_q <= fill_q;
+                else if (pop) drain_q <= next_drain;
             end
             assign fill_w[j]  = fill_q;
             assign drain_w[j] = drain_q;
@@ -291,25 +295,7 @@ module csgrt_event_sort #(
     assign ray_payload_o = dpay_q;
     assign ev_valid_o    = busy_q && dcnt_q != {NB{1'b0}};
     assign ev_last_o     = dcnt_q == {{(NB-1){1'b0}}, 1'b1};
-    // the head and the next event in registers; on a pop the next moves to
-    // the head and the cell at rd_q (the one after it) becomes the next
-    reg  [DW-1:0] head_q, second_q;
-    reg  [NB-1:0] rd_q;                    // the drain cell after second_q
-    localparam NI = $clog2(N);             // a cell's index
-    localparam [NB-1:0] N_CELLS = N[NB-1:0];
-    wire [DW-1:0] after_second = (rd_q < N_CELLS) ? drain_w[rd_q[NI-1:0]] : {DW{1'b0}};
-    always @(posedge clk_i) begin
-        if (handover) begin
-            head_q   <= fill_w[0];
-            second_q <= fill_w[1];
-            rd_q     <= {{(NB-2){1'b0}}, 2'd2};
-        end else if (pop) begin
-            head_q   <= second_q;
-            second_q <= after_second;
-            rd_q     <= rd_q + 1'b1;
-        end
-    end
-    wire [DW-1:0] head   = head_q;
+    wire [DW-1:0] head   = drain_w[0];
     assign ev_t_o        = {1'b0, head[DW-1 -: UW]};
     wire [LB-1:0] head_tie = head[H+1 +: LB];   // the tie field's leaf bits
     wire          unused_head_tie_top = head[H+1+LB];   // the order's, not the leaf's
@@ -318,7 +304,7 @@ module csgrt_event_sort #(
     assign ev_entering_o = head[0];
     // the head's t against the next cell's: the same-t bit after a pop
     reg  same_t_q;
-    wire [DW-1:0] second = second_q;       // only its t is compared
+    wire [DW-1:0] second = drain_w[1];     // only its t is compared
     wire [DW-UW-1:0] unused_second = second[DW-UW-1:0];
     wire next_same_t = second[DW-1 -: UW] == head[DW-1 -: UW];
     assign ev_same_t_o = same_t_q;
