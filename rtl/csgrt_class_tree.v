@@ -28,11 +28,9 @@
 // table (tb/class_tree), at about a third of the logic.
 //
 // Pipeline: stage 0 registers the event's reads by its slot: the flags,
-// the path's BORDER (the slot's material), the sibling slot's IN/OUT value,
-// height 1's operator, and the slot pair under the path's sibling at
-// height 1 (its operator, flags, materials and used bits; stage 1 combines
-// them, so stage 2 reads that sibling from a register) (each a choice by
-// slot_i); then one registered stage per height. (Without stage 0 the slot reads and the
+// the path's BORDER (the slot's material), the sibling slot's IN/OUT value
+// and height 1's operator (each a 2^H-to-1 choice by slot_i); then one
+// registered stage per height. (Without stage 0 the slot reads and the
 // first node were one clock: 12 LUT levels, the out-of-context critical
 // path of this module and of csgrt_walker, tools/module_timing.py.)
 // Latency: TREE_HEIGHT + 1 clocks (counted in enabled clocks).
@@ -98,13 +96,6 @@ module csgrt_class_tree #(
     wire [IW-1:0] sib_in   = (slot_used_i[sib_slot] && flags_i[sib_slot]) ?
                              {1'b1, slot_mat_i[sib_slot*MB +: MB]} : {IW{1'b0}};
     wire [1:0]    op1_in;                  // height 1's operator on the path
-    // the sibling at height 1 (the path's sibling at stage 2), from its
-    // slot pair: operator, and each slot's IN/OUT value (H >= 2)
-    wire [1:0]    sp_op_in;
-    wire [IW-1:0] sp_l_in, sp_r_in;
-    reg  [1:0]    sp_op_q;
-    reg  [IW-1:0] sp_l_q, sp_r_q;
-    reg  [IW-1:0] sib1_q;                  // its IN/OUT value, stage 1
     reg  [NS-1:0] flags_q;
     reg  [H-1:0]  slot0_q;
     reg  [CW-1:0] path0_q;
@@ -117,10 +108,6 @@ module csgrt_class_tree #(
             path0_q <= entering_i ? {2'd2, {MB{1'b0}}, slot_m} : {2'd2, slot_m, {MB{1'b0}}};
             sib0_q  <= sib_in;
             op1_q   <= op1_in;
-            sp_op_q <= sp_op_in;
-            sp_l_q  <= sp_l_in;
-            sp_r_q  <= sp_r_in;
-            sib1_q  <= inout_combine(sp_op_q, sp_l_q, sp_r_q);
         end
 
     wire [IW-1:0] io_w [2:2*NS-1];
@@ -128,36 +115,12 @@ module csgrt_class_tree #(
     generate
         if (H == 1) begin : g_op1_root
             assign op1_in = node_op_i[3:2];
-            assign sp_op_in = 2'd0;            // no height-1 sibling
-            assign sp_l_in  = {IW{1'b0}};
-            assign sp_r_in  = {IW{1'b0}};
-            wire unused_sib1 = ^sib1_q;
         end else begin : g_op1
             wire [1:0] ops1 [0:(NS>>1)-1];
             for (k = 0; k < (NS >> 1); k = k + 1) begin : g_op
                 assign ops1[k] = node_op_i[2*((NS >> 1) + k) +: 2];
             end
             assign op1_in = ops1[slot_i[H-1:1]];
-            // The height-1 sibling's slot pair, chosen here by the slot's
-            // upper bits and combined in stage 1 (sib1_q): stage 2 then
-            // reads a register instead of choosing among height 1's 2^(H-1)
-            // node values (a 64-to-1 choice in front of the node's table,
-            // csgrt_walker's critical path out of context at H 7).
-            wire [H-2:0] q1 = slot_i[H-1:1] ^ {{(H-2){1'b0}}, 1'b1};   // the sibling's place at height 1
-            wire [1:0]   ops_sib [0:(NS>>1)-1];
-            wire [2*MB+1:0] pair_cfg [0:(NS>>1)-1];   // {used r, used l, mat r, mat l}
-            wire [1:0]   pair_fl [0:(NS>>1)-1];
-            for (k = 0; k < (NS >> 1); k = k + 1) begin : g_pair
-                assign ops_sib[k]  = node_op_i[2*((NS >> 1) + k) +: 2];
-                assign pair_cfg[k] = {slot_used_i[2*k+1], slot_used_i[2*k], slot_mat_i[(2*k+1)*MB +: MB],
-                                      slot_mat_i[2*k*MB +: MB]};
-                assign pair_fl[k]  = flags_i[2*k +: 2];
-            end
-            wire [2*MB+1:0] pc = pair_cfg[q1];
-            wire [1:0]      pf = pair_fl[q1];
-            assign sp_op_in = ops_sib[q1];
-            assign sp_l_in  = (pc[2*MB]   && pf[0]) ? {1'b1, pc[0 +: MB]}  : {IW{1'b0}};
-            assign sp_r_in  = (pc[2*MB+1] && pf[1]) ? {1'b1, pc[MB +: MB]} : {IW{1'b0}};
         end
         for (s = 0; s < NS; s = s + 1) begin : g_slot
             assign io_w[NS + s] = (slot_used_i[s] && flags_q[s]) ? {1'b1, slot_mat_i[s*MB +: MB]} : {IW{1'b0}};
@@ -195,13 +158,6 @@ module csgrt_class_tree #(
                     wire unused_pos = ^pos[H-j:1];   // only pos[0] (the side) is read here
                 end else begin : g_io_slots
                     wire unused_io = ^{io_w[2], io_w[3]};   // no node reads the slot values
-                end
-            end else if (j == 2) begin : g_sib_h1
-                assign sib = sib1_q;           // combined in stage 1 from its slot pair
-                if (H > 2) begin : g_pos_up
-                    wire unused_pos = ^pos[H-j:1];   // only pos[0] (the side) is read here
-                end else begin : g_io_h1
-                    wire unused_io = ^{io_w[2], io_w[3]};   // height 1 is the root's children: no node reads them
                 end
             end else begin : g_sib_node
                 // height j-1 as one vector of PW-bit fields, indexed by the
