@@ -233,6 +233,17 @@ module csgrt_raytree #(
     reg                stw_q;
     reg [$clog2(P * MAX_DEPTH)-1:0] stw_addr_q;
     reg [SW-1:0]       stw_data_q;
+    // A stacked child's entry. The reflected ray and a total internal
+    // reflection stay on the near side (the parent's run and flags before the
+    // crossing); the transmitted ray takes the far side's flags, which already
+    // hold the look-ahead, so it carries no run. Reflection takes the mirror
+    // weight, the other two the transmitted weight.
+    wire          ch_far     = ch_kind_i == K_REFRACT;
+    wire [SW-1:0] ch_entry   = {ch_far ? {RUN_W{1'b0}} : run_q[ch_user_i],
+                                ch_far ? after_q[ch_user_i] : near_q[ch_user_i],
+                                depth_q[ch_user_i] + 4'd1,
+                                ch_kind_i == K_REFLECT ? wr_q[ch_user_i] : wt_q[ch_user_i],
+                                ch_d_i, ch_p_i};
     // the output buffer
     reg [OB-1:0]       ob_valid_q;
     reg [23:0]         ob_xy_q  [0:OB-1];
@@ -528,24 +539,11 @@ module csgrt_raytree #(
                             lcol_q[{ch_user_i, ch_light_i}] <= 48'd0;
                         end
                     end
-                    K_REFLECT: begin
+                    K_REFLECT, K_REFRACT, K_TIR: begin
+                        // a stacked child: one push, its entry chosen by kind (ch_entry)
                         stw_q      <= 1'b1;
                         stw_addr_q <= stk(ch_user_i, sp_q[ch_user_i]);
-                        stw_data_q <= {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wr_q[ch_user_i], ch_d_i, ch_p_i};
-                        sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
-                    end
-                    K_REFRACT: begin
-                        // the transmitted ray: far side, the flags after the crossing (and the look-ahead)
-                        stw_q      <= 1'b1;
-                        stw_addr_q <= stk(ch_user_i, sp_q[ch_user_i]);
-                        stw_data_q <= {{RUN_W{1'b0}}, after_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
-                        sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
-                    end
-                    K_TIR: begin
-                        // total internal reflection: near side, like a reflected ray, with the transmitted weight
-                        stw_q      <= 1'b1;
-                        stw_addr_q <= stk(ch_user_i, sp_q[ch_user_i]);
-                        stw_data_q <= {run_q[ch_user_i], near_q[ch_user_i], depth_q[ch_user_i] + 4'd1, wt_q[ch_user_i], ch_d_i, ch_p_i};
+                        stw_data_q <= ch_entry;
                         sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
                     end
                     default: ;   // CONTINUE: not asked for
