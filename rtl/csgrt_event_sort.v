@@ -210,6 +210,13 @@ module csgrt_event_sort #(
     wire [DW-1:0]           drain_w [0:N-1];  // sorted, cell 0 is the next event
     reg [NB-1:0]            dcnt_q;
     reg                     busy_q;        // drain bank holds a ray
+    // dcnt_q's two tests as registers of their own, kept with the count:
+    // dne_q = busy_q && dcnt_q != 0 (an event is left), dlast_q = dcnt_q == 1.
+    // The walker's pop decision reads them, and the pop fans out to every
+    // drain cell's enable: a zero test of the count in front of that (two
+    // LUT levels) lay on the whole design's longest path (tools/logic_depth.py).
+    reg                     dne_q;
+    reg                     dlast_q;
     reg [NS-1:0]            dflags_q;
     reg [PAYLOAD_WIDTH-1:0] dpay_q;
 
@@ -289,12 +296,12 @@ module csgrt_event_sort #(
     endgenerate
 
     // ---- drain bank ----------------------------------------------------------
-    assign pop = ev_pop_i && busy_q && dcnt_q != {NB{1'b0}};
+    assign pop = ev_pop_i && dne_q;
     assign ray_valid_o   = busy_q;
     assign ray_flags_o   = dflags_q;
     assign ray_payload_o = dpay_q;
-    assign ev_valid_o    = busy_q && dcnt_q != {NB{1'b0}};
-    assign ev_last_o     = dcnt_q == {{(NB-1){1'b0}}, 1'b1};
+    assign ev_valid_o    = dne_q;
+    assign ev_last_o     = dlast_q;
     wire [DW-1:0] head   = drain_w[0];
     assign ev_t_o        = {1'b0, head[DW-1 -: UW]};
     wire [LB-1:0] head_tie = head[H+1 +: LB];   // the tie field's leaf bits
@@ -420,17 +427,25 @@ module csgrt_event_sort #(
         // drain bank
         if (handover) begin
             dcnt_q   <= fcnt_q;
+            dlast_q  <= occ_q[0] && !occ_q[1];     // fcnt_q == 1 (occ_q: its thermometer code)
             dflags_q <= fflags_q;
             dpay_q   <= fpay_q;
             same_t_q <= 1'b0;
         end else if (pop) begin
             dcnt_q   <= dcnt_q - 1'b1;
+            dlast_q  <= dcnt_q == {{(NB-2){1'b0}}, 2'd2};
             same_t_q <= next_same_t;
         end
+        // dne_q follows busy_q and dcnt_q: set by a handover with events,
+        // cleared by the ray's release or by popping its last event
+        if (handover)        dne_q <= occ_q[0];   // fcnt_q != 0
+        else if (ray_done_i) dne_q <= 1'b0;
+        else if (pop)        dne_q <= !dlast_q;
         if (!rst_ni) begin
             s1_valid_q <= 1'b0;
             full_q     <= 1'b0;
             busy_q     <= 1'b0;
+            dne_q      <= 1'b0;
             fcnt_q     <= {NB{1'b0}};
             occ_q      <= {N{1'b0}};
             fflags_q   <= {NS{1'b0}};
@@ -443,6 +458,16 @@ module csgrt_event_sort #(
             else if (ray_done_i) busy_q <= 1'b0;
         end
     end
+
+`ifndef SYNTHESIS
+    // the registered tests must equal the count's (a simulation stops if not)
+    always @(posedge clk_i)
+        if (rst_ni && (dne_q != (busy_q && dcnt_q != {NB{1'b0}}) ||
+                       (busy_q && dlast_q != (dcnt_q == {{(NB-1){1'b0}}, 1'b1})))) begin
+            $display("ERROR %m: dne_q / dlast_q out of step with the drain count");
+            $fatal;
+        end
+`endif
 
     generate
         if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2 || LOOK_BEHIND < 1 || (INSERTS != 1 && INSERTS != 2)) begin : g_bad_param
