@@ -18,7 +18,7 @@ TEST_SRC   := $(wildcard model/*_test.cpp)
 TEST_OBJ   := $(TEST_SRC:model/%.cpp=$(BUILD)/model/%.o)
 RTL_SRC    := $(wildcard rtl/*.v)
 
-.PHONY: all help deps model render sim sim-run test bench-model lint clean synth timing-modules
+.PHONY: all help deps model render sim sim-run test bench-model lint clean synth timing-modules logic-depth
 all: model
 
 # Parameters of the render and simulation targets.
@@ -52,6 +52,8 @@ help:
 	@echo "             ULX3S bitstream (yosys, nextpnr-ecp5, ecppack) to out/synth/; docs/fpga.md"
 	@echo "make timing-modules [MODULES=\"csgrt_walker ...\"] [BITS=24] [EFFECTS=shadows,reflection]"
 	@echo "             each module placed and routed alone on the 85F: Fmax and critical path (docs/fpga.md)"
+	@echo "make logic-depth [NETLIST=out/synth/csgrt.json]"
+	@echo "             the whole design's longest paths and largest fan-outs in make synth's netlist, before placement"
 	@echo "make lint    verilator --lint-only -Wall and yosys synthesis of every RTL module"
 	@echo "make bench-model  time the model, the double reference and POV-Ray at 640x480"
 	@echo "make stability    the paper's hard cases: random transforms x widths x ties x {exact, epsilon}"
@@ -207,6 +209,13 @@ timing-modules: deps
 	    --effects $(if $(filter scene,$(EFFECTS)),shadows$(comma)reflection,$(EFFECTS)) \
 	    --tree-height $(or $(TREE_HEIGHT),7) --lut-tile-max $(or $(LUT_TILE_MAX),81) --freq $(FREQ)
 
+# Whole-design paths without place and route (docs/fpga.md "Whole-design
+# paths"): the longest register-to-register paths, across modules too, and
+# the largest fan-outs of make synth's netlist (yosys JSON), by a fixed
+# delay per cell and net. `make logic-depth [NETLIST=out/synth/csgrt.json]`
+logic-depth:
+	@python3 tools/logic_depth.py $(or $(NETLIST),out/synth/csgrt.json) --freq $(FREQ)
+
 # the board top in Verilator with a UART model (tb/board/), built as the
 # FPGA build is (CSGRT_ECP5_DSP: csgrt_mul in MULT18X18D tiles): the ECP5
 # primitives replaced by the models in tb/ecp5/ (EHXPLLL, MULT18X18D),
@@ -229,7 +238,7 @@ $(BOARD_BIN): $(RTL_SRC) $(BOARD_SRC) tb/board/tb_board.cpp $(BUILD)/libcsgrt.a 
 
 # ------------------------------------------------------------------ checks
 test: deps $(BUILD)/csgrt $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN) accuracy-smoke
-	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN) tools/accuracy_test.py
+	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN) tools/accuracy_test.py tools/logic_depth_test.py
 
 lint: deps lint-rtl
 

@@ -70,6 +70,158 @@ def hier(name):
     return ".".join(p for p in parts[:-1] if not p.startswith("$") and not p.startswith("g_")) or "(top)"
 
 
+CLOCK_PORTS = ("CLK", "CLKA", "CLKB", "WCK", "CLK0", "CLK1", "CLK2", "CLK3")
+
+
+class LoopError(Exception):
+    pass
+
+
+class Analysis:
+    """Arrival times over one flattened module of a yosys JSON netlist."""
+
+    def __init__(self, module, fanout_cost=FANOUT):
+        self.cells = module["cells"]
+        self.fanout_cost = fanout_cost
+        # a readable name per net bit: the shortest public name that holds it
+        self.bit_name = {}
+        for name, net in module["netnames"].items():
+            if net.get("hide_name"):
+                continue
+            for i, b in enumerate(net["bits"]):
+                if isinstance(b, str):
+                    continue
+                label = name if len(net["bits"]) == 1 else f"{name}[{i}]"
+                if b not in self.bit_name or len(label) < len(self.bit_name[b]):
+                    self.bit_name[b] = label
+        self.driver = {}                          # bit -> (cell, port)
+        self.sinks = collections.defaultdict(list)
+        self.unknown = collections.Counter()      # cell types without arcs
+        for cname, c in self.cells.items():
+            dirs = c.get("port_directions", {})
+            for port, bits in c["connections"].items():
+                for b in bits:
+                    if isinstance(b, str):
+                        continue
+                    if dirs.get(port) == "output":
+                        self.driver[b] = (cname, port)
+                    else:
+                        self.sinks[b].append((cname, port))
+            if c["type"] not in COMB and c["type"] not in CLK_TO_Q:
+                self.unknown[c["type"]] += 1
+        self.fanout = {b: len(v) for b, v in self.sinks.items()}
+        self.arrival = {}                         # bit -> (time, previous bit or None, cell)
+        self._propagate()
+        self.ends = self._endpoints()             # (time, bit, cell, port), latest first
+
+    def net_delay(self, b):
+        return NET + self.fanout_cost * math.log2(max(1, self.fanout.get(b, 1)))
+
+    def _start_time(self, b):
+        """(time, None, cell) where a path starts at bit b, or None inside logic."""
+        if b not in self.driver:
+            return (0.0, None, "(pin)")
+        cname, port = self.driver[b]
+        ctype = self.cells[cname]["type"]
+        if ctype in COMB:
+            return None
+        if ctype == "DP16KD":   # the output register, when used, hides the array's access time
+            mode = str(self.cells[cname]["parameters"].get("REGMODE_" + ("A" if port.startswith("DOA") else "B"), ""))
+            if mode == "OUTREG":
+                return (DP16KD_OUTREG, None, cname)
+        return (CLK_TO_Q.get(ctype, 0.0), None, cname)
+
+    def _arcs(self, b):
+        cname, port = self.driver[b]
+        c = self.cells[cname]
+        for ins, delay, routed in COMB[c["type"]].get(port, []):
+            for p in ins:
+                for ib in c["connections"].get(p, []):
+                    if not isinstance(ib, str):
+                        yield ib, delay + (self.net_delay(ib) if routed else 0.0)
+
+    def _propagate(self):
+        # depth-first, iterative (paths are thousands of cells deep in a
+        # carry chain), with the bits being expanded marked to find loops
+        arrival, open_ = self.arrival, set()
+        for b0 in self.driver:
+            if b0 in arrival:
+                continue
+            stack = [b0]
+            while stack:
+                b = stack[-1]
+                if b in arrival:
+                    stack.pop()
+                    continue
+                st = self._start_time(b)
+                if st is not None:
+                    arrival[b] = st
+                    stack.pop()
+                    continue
+                pending = [ib for ib, _ in self._arcs(b) if ib not in arrival]
+                if pending and b not in open_:
+                    open_.add(b)
+                    for ib in pending:
+                        if ib in open_:
+                            raise LoopError(self.bit_name.get(ib, f"${ib}"))
+                    stack.extend(pending)
+                    continue
+                if pending:   # expanded before, an input still open: a loop
+                    raise LoopError(self.bit_name.get(b, f"${b}"))
+                open_.discard(b)
+                best = (0.0, None, self.driver[b][0])
+                for ib, d in self._arcs(b):
+                    t = arrival[ib][0] + d
+                    if t > best[0] or best[1] is None:
+                        best = (t, ib, self.driver[b][0])
+                arrival[b] = best
+                stack.pop()
+
+    def _endpoints(self):
+        ends = []
+        for cname, c in self.cells.items():
+            ctype = c["type"]
+            if ctype not in SETUP:
+                continue
+            dirs = c.get("port_directions", {})
+            for port, bits in c["connections"].items():
+                if dirs.get(port) != "input" or port in CLOCK_PORTS:
+                    continue
+                if ctype == "TRELLIS_DPR16X4" and port.startswith("RAD"):
+                    continue   # the read address: a combinational input (its arc is in COMB)
+                for b in bits:
+                    if isinstance(b, str):
+                        continue   # a constant
+                    if b not in self.arrival and b not in self.driver:
+                        self.arrival[b] = self._start_time(b)   # a pin
+                    if b in self.arrival:
+                        ends.append((self.arrival[b][0] + self.net_delay(b) + SETUP[ctype], b, cname, port))
+        ends.sort(key=lambda e: -e[0])
+        return ends
+
+    def trace(self, b):
+        """[(time, bit, cell)] from the path's start to bit b."""
+        path = []
+        while b is not None:
+            t, prev, cname = self.arrival[b]
+            path.append((t, b, cname))
+            b = prev
+        return path[::-1]
+
+    def name(self, b):
+        return self.bit_name.get(b, f"${b}")
+
+    def end_name(self, cname):
+        c = self.cells[cname]
+        q = c["connections"].get("Q", [])
+        if c["type"] == "TRELLIS_FF" and q and not isinstance(q[0], str):
+            return self.bit_name.get(q[0], cname)
+        return cname
+
+    def lut_levels(self, path):
+        return sum(1 for _, _, c in path if c in self.cells and self.cells[c]["type"] == "LUT4")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("json")
@@ -85,186 +237,68 @@ def main():
         design = json.load(open(args.json))
     except (OSError, ValueError) as e:
         sys.exit(f"logic_depth: cannot read {args.json}: {e}")
-    mods = design["modules"]
+    mods = design.get("modules", {})
     top = args.top or next((n for n, m in mods.items() if m.get("attributes", {}).get("top")), None)
     if top not in mods:
         sys.exit(f"logic_depth: no top module {top!r} in {args.json} (modules: {', '.join(list(mods)[:8])} ...)")
-    m = mods[top]
-
-    # a readable name per net bit: the shortest public name that holds it
-    bit_name = {}
-    for name, net in m["netnames"].items():
-        if net.get("hide_name"):
-            continue
-        for i, b in enumerate(net["bits"]):
-            if isinstance(b, str):
-                continue
-            label = name if len(net["bits"]) == 1 else f"{name}[{i}]"
-            if b not in bit_name or len(label) < len(bit_name[b]):
-                bit_name[b] = label
-
-    driver = {}          # bit -> (cell, port)
-    sinks = collections.defaultdict(list)
-    cells = m["cells"]
-    unknown = collections.Counter()
-    for cname, c in cells.items():
-        dirs = c.get("port_directions", {})
-        for port, bits in c["connections"].items():
-            for b in bits:
-                if isinstance(b, str):
-                    continue
-                if dirs.get(port) == "output":
-                    driver[b] = (cname, port)
-                else:
-                    sinks[b].append((cname, port))
-        if c["type"] not in COMB and c["type"] not in CLK_TO_Q:
-            unknown[c["type"]] += 1
-
-    fanout = {b: len(v) for b, v in sinks.items()}
-
-    def net_delay(b):
-        return NET + args.fanout_cost * math.log2(max(1, fanout.get(b, 1)))
-
-    # arrival time at each cell output bit (memoised, iterative)
-    arrival = {}   # bit -> (time, previous bit or None, cell)
-
-    def start_time(b):
-        if b not in driver:
-            return (0.0, None, "(pin)")
-        cname, port = driver[b]
-        ctype = cells[cname]["type"]
-        if ctype in COMB:
-            return None
-        if ctype == "DP16KD":   # the output register, when used, hides the array's access time
-            mode = str(cells[cname]["parameters"].get("REGMODE_" + ("A" if port.startswith("DOA") else "B"), ""))
-            if mode == "OUTREG":
-                return (DP16KD_OUTREG, None, cname)
-        return (CLK_TO_Q.get(ctype, 0.0), None, cname)
-
-    def arcs(b):
-        cname, port = driver[b]
-        c = cells[cname]
-        for ins, delay, routed in COMB[c["type"]].get(port, []):
-            for p in ins:
-                for ib in c["connections"].get(p, []):
-                    if not isinstance(ib, str):
-                        yield ib, delay + (net_delay(ib) if routed else 0.0)
-
-    sys.setrecursionlimit(10000)
-    for b0 in list(driver):
-        if b0 in arrival:
-            continue
-        stack = [b0]
-        while stack:
-            b = stack[-1]
-            if b in arrival:
-                stack.pop()
-                continue
-            st = start_time(b)
-            if st is not None:
-                arrival[b] = st
-                stack.pop()
-                continue
-            pending = [ib for ib, _ in arcs(b) if ib not in arrival]
-            if pending:
-                if len(stack) > 200000:
-                    sys.exit("logic_depth: a combinational loop")
-                stack.extend(pending)
-                continue
-            best = (0.0, None, driver[b][0])
-            for ib, d in arcs(b):
-                t = arrival[ib][0] + d
-                if t > best[0] or best[1] is None:
-                    best = (t, ib, driver[b][0])
-            arrival[b] = best
-            stack.pop()
-
-    # endpoints: inputs of sequential cells
-    ends = []
-    for cname, c in cells.items():
-        ctype = c["type"]
-        if ctype not in SETUP:
-            continue
-        dirs = c.get("port_directions", {})
-        for port, bits in c["connections"].items():
-            if dirs.get(port) != "input" or port in ("CLK", "CLKA", "CLKB", "WCK", "CLK0", "CLK1", "CLK2", "CLK3"):
-                continue
-            if ctype == "TRELLIS_DPR16X4" and port.startswith("RAD"):
-                continue
-            for b in bits:
-                if isinstance(b, str) or b not in arrival:
-                    continue
-                ends.append((arrival[b][0] + net_delay(b) + SETUP[ctype], b, cname, port))
-    if not ends:
+    try:
+        a = Analysis(mods[top], args.fanout_cost)
+    except LoopError as e:
+        sys.exit(f"logic_depth: a combinational loop through {e}")
+    if not a.ends:
         sys.exit("logic_depth: no register endpoints found")
-    ends.sort(key=lambda e: -e[0])
-    period = ends[0][0]
-    print(f"logic_depth: {len(cells)} cells, {len(ends)} endpoints; worst path {period:.2f} ns "
+    cells = a.cells
+    period = a.ends[0][0]
+    print(f"logic_depth: {len(cells)} cells, {len(a.ends)} endpoints; worst path {period:.2f} ns "
           f"-> about {1000.0 / period:.1f} MHz before placement (a net: {NET} ns + {args.fanout_cost} ns "
           f"per doubling of its fan-out)")
-    if unknown:
+    if a.unknown:
         print("  cells with no delay arcs (taken as start and end points): " +
-              ", ".join(f"{t} x{n}" for t, n in unknown.most_common()))
-
-    def trace(b):
-        path = []
-        while b is not None:
-            t, prev, cname = arrival[b]
-            path.append((t, b, cname))
-            b = prev
-        return path[::-1]
-
-    def end_name(cname):
-        c = cells[cname]
-        q = c["connections"].get("Q", [])
-        if c["type"] == "TRELLIS_FF" and q and not isinstance(q[0], str):
-            return bit_name.get(q[0], cname)
-        return cname
+              ", ".join(f"{t} x{n}" for t, n in a.unknown.most_common()))
 
     def base(name):
-        return re.sub(r"\[\d+\]$", "", name)
+        return re.sub(r"(\.\d+)+$", "", re.sub(r"\[\d+\]", "[]", name))
 
-    def cell_label(cname):
-        return f"{cells[cname]['type']}" if cname in cells else cname
+    def step(at, pb, pc, indent):
+        label = cells[pc]["type"] if pc in cells else pc
+        return f"{indent}{at:6.2f}  {label:16s} {a.name(pb)}  (fan-out {a.fanout.get(pb, 0)})"
 
+    # the worst paths, one per pair of start and end register (bits of a
+    # bus counted once)
     shown, seen = 0, set()
-    for t, b, cname, port in ends:
-        path = trace(b)
-        start = path[0]
-        start_name = bit_name.get(start[1], start[2])
-        key = (hier(start_name), hier(end_name(cname)))
-        sig = (base(start_name), base(end_name(cname)))
+    for t, b, cname, port in a.ends:
+        if shown >= args.paths:
+            break
+        path = a.trace(b)
+        start_name = a.bit_name.get(path[0][1], path[0][2])
+        sig = (base(start_name), base(a.end_name(cname)))
         if sig in seen:
             continue
         seen.add(sig)
         shown += 1
-        levels = sum(1 for _, _, c in path if c in cells and cells[c]["type"] in ("LUT4",))
-        print(f"\n#{shown}  {t:.2f} ns, {levels} LUT levels, {len(path)} cells: "
-              f"{key[0]} -> {key[1]}")
+        print(f"\n#{shown}  {t:.2f} ns, {a.lut_levels(path)} LUT levels, {len(path)} cells: "
+              f"{hier(start_name)} -> {hier(a.end_name(cname))}")
         for at, pb, pc in path:
-            print(f"    {at:6.2f}  {cell_label(pc):16s} {bit_name.get(pb, '$' + str(pb))}  (fan-out {fanout.get(pb, 0)})")
-        print(f"    {t:6.2f}  {cells[cname]['type'] + '.' + port:16s} {end_name(cname)}")
-        if shown >= args.paths:
-            break
+            print(step(at, pb, pc, "    "))
+        print(f"    {t:6.2f}  {cells[cname]['type'] + '.' + port:16s} {a.end_name(cname)}")
 
     print(f"\nthe {args.nets} logic nets of highest fan-out (clock excluded), with their arrival:")
-    big = sorted((b for b in fanout if b in arrival and driver.get(b) and
-                  cells[driver[b][0]]["type"] not in ("EHXPLLL", "DCCA")), key=lambda b: -fanout[b])
+    big = sorted((b for b in a.fanout if b in a.arrival and a.driver.get(b) and
+                  cells[a.driver[b][0]]["type"] not in ("EHXPLLL", "DCCA")), key=lambda b: -a.fanout[b])
     for b in big[:args.nets]:
-        kinds = collections.Counter(cells[c]["type"] + "." + p for c, p in sinks[b])
-        src = trace(b)[0]
-        print(f"  {fanout[b]:6d}  {arrival[b][0]:5.2f} ns  {cells[driver[b][0]]['type']:10s} {bit_name.get(b, b)}")
-        print(f"          sinks: " + ", ".join(f"{k} x{n}" for k, n in kinds.most_common(3)))
-        for at, pb, pc in trace(b)[:-1]:
-            print(f"          {at:6.2f}  {cell_label(pc):10s} {bit_name.get(pb, '$' + str(pb))}  (fan-out {fanout.get(pb, 0)})")
+        kinds = collections.Counter(cells[c]["type"] + "." + p for c, p in a.sinks[b])
+        print(f"  {a.fanout[b]:6d}  {a.arrival[b][0]:5.2f} ns  {cells[a.driver[b][0]]['type']:10s} {a.name(b)}")
+        print("          sinks: " + ", ".join(f"{k} x{n}" for k, n in kinds.most_common(3)))
+        for at, pb, pc in a.trace(b)[:-1]:
+            print(step(at, pb, pc, "          "))
 
     limit = 1000.0 / args.freq
     groups = collections.Counter()
-    for t, b, cname, port in ends:
+    for t, b, cname, port in a.ends:
         if t <= limit:
             break
-        start = trace(b)[0]
-        groups[(hier(bit_name.get(start[1], start[2])), hier(end_name(cname)))] += 1
+        start = a.trace(b)[0]
+        groups[(hier(a.bit_name.get(start[1], start[2])), hier(a.end_name(cname)))] += 1
     print(f"\nendpoints over {limit:.2f} ns ({args.freq:g} MHz), by module instance of start -> end:")
     for (s, e), n in groups.most_common(25):
         print(f"  {n:7d}  {s} -> {e}")
