@@ -17,6 +17,13 @@
 // caller keeps its valid chain in flip-flops (it needs the reset); the data
 // words, like the chain's, are not reset.
 //
+// OUT_REG = 1 puts a fabric register after the RAM's read register and
+// keeps one entry fewer in the ring (STAGES - 1), so the delay is the same:
+// the DP16KD's read port takes about 5 ns from clock to output (yosys does
+// not use its own output register), which a consumer with logic behind the
+// line (csgrt_isect's square root and dividers) pays inside its clock; the
+// fabric register's takes 0.5. WIDTH flip-flops more.
+//
 // Small lines (STAGES < MIN_STAGES or WIDTH * STAGES < MIN_BITS) stay a
 // register chain: a RAM's pointer and output register would cost more.
 //
@@ -26,7 +33,8 @@ module csgrt_delay_ram #(
     parameter WIDTH      = 8,    // data width (>= 1)
     parameter STAGES     = 8,    // delay in enabled clocks (>= 1)
     parameter MIN_STAGES = 4,    // below this: a register chain
-    parameter MIN_BITS   = 64    // below WIDTH * STAGES = this: a register chain
+    parameter MIN_BITS   = 64,   // below WIDTH * STAGES = this: a register chain
+    parameter OUT_REG    = 0     // 1: a fabric register after the RAM's (same delay, above)
 ) (
     input  wire             clk_i,
     input  wire             rst_ni,   // synchronous, active low (the pointer only)
@@ -35,15 +43,16 @@ module csgrt_delay_ram #(
     output wire [WIDTH-1:0] data_o
 );
     generate
-        if (STAGES >= MIN_STAGES && STAGES >= 2 && WIDTH * STAGES >= MIN_BITS) begin : g_ram
-            localparam AW = $clog2(STAGES);
+        if (STAGES >= MIN_STAGES && STAGES >= 3 && WIDTH * STAGES >= MIN_BITS) begin : g_ram
+            localparam L  = STAGES - (OUT_REG != 0 ? 1 : 0);   // ring entries (>= 2)
+            localparam AW = $clog2(L);
             /* verilator lint_off WIDTH */
-            localparam [AW-1:0] LAST = STAGES - 1;
+            localparam [AW-1:0] LAST = L - 1;
             /* verilator lint_on WIDTH */
             // block RAM: nearly all of the ECP5's DP16KD are free while LUTs
             // are the scarce resource, and LUT RAM would spend them
             (* ram_style = "block" *)
-            reg  [WIDTH-1:0] mem [0:STAGES-1];
+            reg  [WIDTH-1:0] mem [0:L-1];
             reg  [AW-1:0]    wr_q;
             reg  [WIDTH-1:0] out_q;
             wire [AW-1:0]    rd = (wr_q == LAST) ? {AW{1'b0}} : wr_q + 1'b1;   // the oldest entry
@@ -58,7 +67,13 @@ module csgrt_delay_ram #(
                     out_q     <= mem[rd];
                 end
             end
-            assign data_o = out_q;
+            if (OUT_REG != 0) begin : g_out_reg
+                reg [WIDTH-1:0] out_fab_q;
+                always @(posedge clk_i) if (ce_i) out_fab_q <= out_q;
+                assign data_o = out_fab_q;
+            end else begin : g_out_ram
+                assign data_o = out_q;
+            end
         end else begin : g_regs
             reg [STAGES*WIDTH-1:0] data_q;
             if (STAGES == 1) begin : g_one

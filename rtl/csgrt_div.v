@@ -15,7 +15,8 @@ module csgrt_div #(
     parameter NUM_WIDTH  = 16,   // signed numerator width (> QUOT_BITS)
     parameter DEN_WIDTH  = 8,    // signed denominator width (>= 2)
     parameter QUOT_BITS  = 8,    // quotient magnitude bits = stages (>= 2)
-    parameter USER_WIDTH = 1     // sideband carried alongside (>= 1)
+    parameter USER_WIDTH = 1,    // sideband carried alongside (>= 1)
+    parameter USER_OUT_REG = 0   // csgrt_div_core's
 ) (
     input  wire                  clk_i,
     input  wire                  rst_ni,   // synchronous, active low
@@ -49,7 +50,8 @@ module csgrt_div #(
         .NUM_WIDTH (NUM_WIDTH),
         .DEN_WIDTH (DEN_WIDTH),
         .QUOT_BITS (QUOT_BITS),
-        .USER_WIDTH(USER_WIDTH)
+        .USER_WIDTH(USER_WIDTH),
+        .USER_OUT_REG(USER_OUT_REG)
     ) u_core (
         .clk_i  (clk_i),
         .rst_ni (rst_ni),

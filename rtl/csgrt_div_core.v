@@ -21,7 +21,8 @@ module csgrt_div_core #(
     parameter NUM_WIDTH  = 16,   // signed numerator width (> QUOT_BITS)
     parameter DEN_WIDTH  = 8,    // signed denominator width (>= 2)
     parameter QUOT_BITS  = 8,    // quotient magnitude bits = iteration stages (>= 2)
-    parameter USER_WIDTH = 1     // sideband carried alongside (>= 1)
+    parameter USER_WIDTH = 1,    // sideband carried alongside (>= 1)
+    parameter USER_OUT_REG = 0   // 1: the sideband's RAM line ends in a fabric register (csgrt_delay_ram OUT_REG)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_ni,   // synchronous, active low (valid bits only)
@@ -146,7 +147,7 @@ module csgrt_div_core #(
     assign neg_o   = side_last[DW+QB];
     assign ovf_o   = side_last[DW+QB+1];
 
-    csgrt_delay_ram #(.WIDTH(UW), .STAGES(QB + 1)) u_user (
+    csgrt_delay_ram #(.WIDTH(UW), .STAGES(QB + 1), .OUT_REG(USER_OUT_REG)) u_user (
         .clk_i, .rst_ni, .ce_i, .data_i (user_i), .data_o (user_o)
     );
 

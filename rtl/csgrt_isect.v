@@ -302,7 +302,9 @@ module csgrt_isect #(
     wire           p6_valid;
     wire [SQ-1:0]  p6_s;
     wire [SBW-1:0] p6_side;
-    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(SBW)) u_sqrt (
+    // the sidebands' RAM lines end in fabric registers: P7 and P9 compute
+    // on them straight away (csgrt_delay_ram OUT_REG)
+    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(SBW), .USER_OUT_REG(1)) u_sqrt (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p5_valid_q),
         .n_i(p5_n_q), .user_i(p5_side_q),
         .valid_o(p6_valid), .root_o(p6_s), .user_o(p6_side));
@@ -348,7 +350,7 @@ module csgrt_isect #(
     wire            q0_neg, q0_ovf, q1_neg, q1_ovf;
     wire [SB7W-1:0] p8_side;
     wire            unused_v1, unused_u1;
-    csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(SB7W)) u_div0 (
+    csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(SB7W), .USER_OUT_REG(1)) u_div0 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p7_valid_q),
         .num_i(p7_num0_q), .den_i(p7_den0_q), .user_i(p7_side_q),
         .valid_o(p8_valid), .quot_o(q0_mag), .neg_o(q0_neg), .ovf_o(q0_ovf), .user_o(p8_side));

@@ -13,7 +13,8 @@
 // Nothing is lost or duplicated under any pattern of valid_i and ready_i.
 module csgrt_sqrt #(
     parameter RESULT_BITS = 8,   // result bits = pipeline stages (>= 2)
-    parameter USER_WIDTH  = 1    // sideband carried alongside (>= 1)
+    parameter USER_WIDTH  = 1,   // sideband carried alongside (>= 1)
+    parameter USER_OUT_REG = 0   // csgrt_sqrt_core's
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,    // synchronous, active low
@@ -38,7 +39,8 @@ module csgrt_sqrt #(
 
     csgrt_sqrt_core #(
         .RESULT_BITS(RESULT_BITS),
-        .USER_WIDTH (USER_WIDTH)
+        .USER_WIDTH (USER_WIDTH),
+        .USER_OUT_REG(USER_OUT_REG)
     ) u_core (
         .clk_i  (clk_i),
         .rst_ni (rst_ni),

@@ -14,7 +14,8 @@
 // holds) and a valid bit shifted alongside. csgrt_sqrt adds valid/ready.
 module csgrt_sqrt_core #(
     parameter RESULT_BITS = 8,   // result bits = pipeline stages (>= 2)
-    parameter USER_WIDTH  = 1    // sideband carried alongside (>= 1)
+    parameter USER_WIDTH  = 1,   // sideband carried alongside (>= 1)
+    parameter USER_OUT_REG = 0   // 1: the sideband's RAM line ends in a fabric register (csgrt_delay_ram OUT_REG)
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,    // synchronous, active low (valid bits only)
@@ -93,7 +94,7 @@ module csgrt_sqrt_core #(
 
     // The sideband rides along R enabled clocks in a RAM delay line (block
     // or LUT RAM on the FPGA) rather than R copies in flip-flops.
-    csgrt_delay_ram #(.WIDTH(USER_WIDTH), .STAGES(R)) u_user (
+    csgrt_delay_ram #(.WIDTH(USER_WIDTH), .STAGES(R), .OUT_REG(USER_OUT_REG)) u_user (
         .clk_i, .rst_ni, .ce_i, .data_i (user_i), .data_o (user_o)
     );
 

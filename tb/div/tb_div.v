@@ -58,7 +58,8 @@ module tb_div (
         .valid_o(m_valid_o), .ready_i(m_ready_i), .quot_o(m_quot_o), .neg_o(m_neg_o), .ovf_o(m_ovf_o),
         .user_o(m_user_o));
 
-    csgrt_div #(.NUM_WIDTH(52), .DEN_WIDTH(29), .QUOT_BITS(22), .USER_WIDTH(16)) u_l (
+    // the long divider's sideband line ends in a fabric register (USER_OUT_REG)
+    csgrt_div #(.NUM_WIDTH(52), .DEN_WIDTH(29), .QUOT_BITS(22), .USER_WIDTH(16), .USER_OUT_REG(1)) u_l (
         .clk_i(l_clk_i), .rst_ni(l_rst_ni),
         .valid_i(l_valid_i), .ready_o(l_ready_o), .num_i(l_num_i), .den_i(l_den_i), .user_i(l_user_i),
         .valid_o(l_valid_o), .ready_i(l_ready_i), .quot_o(l_quot_o), .neg_o(l_neg_o), .ovf_o(l_ovf_o),

@@ -45,7 +45,8 @@ module tb_sqrt (
         .valid_i(r10_valid_i), .ready_o(r10_ready_o), .n_i(r10_n_i), .user_i(r10_user_i),
         .valid_o(r10_valid_o), .ready_i(r10_ready_i), .root_o(r10_root_o), .user_o(r10_user_o));
 
-    csgrt_sqrt #(.RESULT_BITS(27), .USER_WIDTH(16)) u_r27 (
+    // the 27-stage root's sideband line ends in a fabric register (USER_OUT_REG)
+    csgrt_sqrt #(.RESULT_BITS(27), .USER_WIDTH(16), .USER_OUT_REG(1)) u_r27 (
         .clk_i(r27_clk_i), .rst_ni(r27_rst_ni),
         .valid_i(r27_valid_i), .ready_o(r27_ready_o), .n_i(r27_n_i), .user_i(r27_user_i),
         .valid_o(r27_valid_o), .ready_i(r27_ready_i), .root_o(r27_root_o), .user_o(r27_user_o));
