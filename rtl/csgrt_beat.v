@@ -12,23 +12,36 @@
 // Example, II = 3, ce_i high throughout: phase_o 0 1 2 0 1 2 ...,
 // adv_o 0 0 1 0 0 1 ...; with ce_i low in the third clock the phase holds
 // at 2 and adv_o waits for ce_i.
+//
+// adv_q_o is adv_o again, from a register of its own: adv_o is the enable
+// of thousands of flip-flops (every register of the pipeline), so its net
+// is slow, and a handshake that reads it (the unit's s_ready_o) continued
+// that net into the next module (tools/logic_depth.py). The register is
+// loaded with adv_o's next value, from ce_next_i (the enable's value after
+// the next rising edge: csgrt_skid's ready_next_o); a simulation stops if
+// the two ever differ.
 module csgrt_beat #(
     parameter II = 1   // running clocks per beat: 1 or 3
 ) (
     input  wire       clk_i,
     input  wire       rst_ni,    // synchronous, active low: phase 0
     input  wire       ce_i,      // the pipeline runs (low = stall)
+    input  wire       ce_next_i, // ce_i after the next rising edge (for adv_q_o)
     output wire [1:0] phase_o,
     output wire       last_o,
-    output wire       adv_o
+    output wire       adv_o,
+    output wire       adv_q_o    // adv_o, from a register (above)
 );
+    reg adv_q;
+    assign adv_q_o = adv_q;
 
     generate
         if (II == 1) begin : g_every
-            wire unused_clk = ^{clk_i, rst_ni};   // no state
             assign phase_o = 2'd0;
             assign last_o  = 1'b1;
             assign adv_o   = ce_i;
+            // ce_next_i already says what a reset makes of the enable
+            always @(posedge clk_i) adv_q <= ce_next_i;
         end else begin : g_three
             reg [1:0] phase_q;
             always @(posedge clk_i) begin
@@ -38,8 +51,19 @@ module csgrt_beat #(
             assign phase_o = phase_q;
             assign last_o  = (phase_q == 2'd2);
             assign adv_o   = ce_i && last_o;
+            // the phase after the edge is 2: a reset makes it 0, a running
+            // clock moves 1 to 2, a stalled one keeps 2
+            always @(posedge clk_i)
+                adv_q <= ce_next_i && rst_ni && (ce_i ? phase_q == 2'd1 : phase_q == 2'd2);
         end
 
+`ifndef SYNTHESIS
+        always @(posedge clk_i)
+            if (rst_ni && adv_q != adv_o) begin
+                $display("ERROR %m: adv_q_o differs from adv_o (is ce_next_i the enable's next value?)");
+                $fatal;
+            end
+`endif
         if (II != 1 && II != 3) begin : g_bad_param
             initial begin
                 $display("ERROR %m: csgrt_beat needs II = 1 or 3");

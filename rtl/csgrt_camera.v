@@ -74,7 +74,10 @@ module csgrt_camera #(
     wire [1:0] ph;
     wire       adv;   // the beat's advance: every register moves on it
     wire       last;  // the beat's last clock: an item leaves for the output skid only then
-    csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .phase_o(ph), .last_o(last), .adv_o(adv));
+    wire       en_next, adv_q;
+    csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .ce_next_i(en_next), .phase_o(ph),
+                                  .last_o(last), .adv_o(adv), .adv_q_o(adv_q));
+    wire unused_adv_q = adv_q;   // no handshake reads the advance here
 
     // ---- generator -----------------------------------------------------------
     reg [3*CW-1:0] dx_q, dy_q;   // component k at k*CW
@@ -185,7 +188,7 @@ module csgrt_camera #(
     wire             out_last;
     csgrt_skid #(.WIDTH(OUTW)) u_skid (
         .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(u_valid && last), .ready_o(en),
+        .valid_i(u_valid && last), .ready_o(en), .ready_next_o(en_next),
         .data_i({d_side, origin_q, dir}),
         .valid_o(m_valid_o), .ready_i(m_ready_i),
         .data_o({out_last, m_y_o, m_x_o, m_o_o, m_d_o}));

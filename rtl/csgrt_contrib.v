@@ -48,8 +48,12 @@ module csgrt_contrib #(
     wire [1:0] ph;
     wire       adv;   // the beat's advance: every register but the multipliers' moves on it
     wire       last;  // the beat's last clock: an item leaves for the output skid only then
-    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .phase_o(ph), .last_o(last), .adv_o(adv));
-    assign s_ready_o = adv;
+    wire       en_next, adv_q;
+    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .ce_next_i(en_next), .phase_o(ph), .last_o(last),
+                                  .adv_o(adv), .adv_q_o(adv_q));
+    // the upstream handshake reads the advance's own register, not the
+    // enable net of every stage (csgrt_beat)
+    assign s_ready_o = adv_q;
 
     // ---- input: registered for II = 3 (steady for the shared multiplier's beat) ----
     localparam IW = TAG_W + 6 * COL_W + 1 + 16 + 48;
@@ -131,7 +135,7 @@ module csgrt_contrib #(
         contrib[c_out*13 +: 13] = (|wl[c_out*CP + 12 +: CP - 12]) ? 13'd4095 : wl[c_out*CP +: 13];
 
     csgrt_skid #(.WIDTH(TAG_W + 39)) u_skid (
-        .clk_i, .rst_ni, .valid_i(c2_valid && last), .ready_o(en), .data_i({contrib, c2_tag}),
+        .clk_i, .rst_ni, .valid_i(c2_valid && last), .ready_o(en), .ready_next_o(en_next), .data_i({contrib, c2_tag}),
         .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_contrib_o, m_tag_o}));
 endmodule
 `default_nettype wire

@@ -67,6 +67,7 @@ module csgrt_div #(
         .user_o (core_user)
     );
 
+    wire unused_en_next;   // no beat here
     csgrt_skid #(
         .WIDTH(QUOT_BITS + 3 + USER_WIDTH)
     ) u_skid (
@@ -74,6 +75,7 @@ module csgrt_div #(
         .rst_ni (rst_ni),
         .valid_i(core_valid),
         .ready_o(en),
+        .ready_next_o(unused_en_next),
         .data_i ({core_user, core_ovf, core_neg, quot_signed}),
         .valid_o(valid_o),
         .ready_i(ready_i),

@@ -95,9 +95,13 @@ module csgrt_hit_prep #(
     wire [1:0] ph;
     wire       adv;   // the beat's advance: every register but the multipliers' moves on it
     wire       last;  // the beat's last clock: an item leaves for the output skid only then
-    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .phase_o(ph), .last_o(last), .adv_o(adv));
+    wire       en_next, adv_q;
+    csgrt_beat #(.II(II)) u_beat (.clk_i, .rst_ni, .ce_i(en), .ce_next_i(en_next), .phase_o(ph), .last_o(last),
+                                  .adv_o(adv), .adv_q_o(adv_q));
     wire fifo_ready;
-    assign s_ready_o = adv && fifo_ready;
+    // the upstream handshake reads the advance's own register, not the
+    // enable net of every stage (csgrt_beat)
+    assign s_ready_o = adv_q && fifo_ready;
     wire take = s_valid_i && s_ready_o;
 
     genvar i;
@@ -294,7 +298,7 @@ module csgrt_hit_prep #(
     wire [OW-1:0] out_w;
     wire          out_valid;
     csgrt_skid #(.WIDTH(OW)) u_skid (
-        .clk_i, .rst_ni, .valid_i(x4_valid && last), .ready_o(en), .data_i({sc, x4_z}),
+        .clk_i, .rst_ni, .valid_i(x4_valid && last), .ready_o(en), .ready_next_o(en_next), .data_i({sc, x4_z}),
         .valid_o(out_valid), .ready_i(m_ready_i), .data_o(out_w));
     wire          rec_valid;
     // the record is about a thousand bits wide at 24 bits: block RAM, not LUT

@@ -104,7 +104,21 @@ module csgrt_isect #(
     localparam [1:0] R_NEGINF = 2'd0, R_FINITE = 2'd1, R_POSINF = 2'd2;
 
     wire en;   // global stage enable: the output skid buffer's ready
-    assign ready_o = en;
+    // ready_o is en again, from a register of its own (loaded with the
+    // skid's next ready): en is the enable of every stage (about 7,000
+    // flip-flops), and the dispatcher's issue logic read that net
+    // (tools/logic_depth.py); a simulation stops if the two differ
+    wire en_next;
+    reg  ready_q;
+    always @(posedge clk_i) ready_q <= en_next;
+    assign ready_o = ready_q;
+`ifndef SYNTHESIS
+    always @(posedge clk_i)
+        if (rst_ni && ready_q != en) begin
+            $display("ERROR %m: ready_q differs from the skid's ready");
+            $fatal;
+        end
+`endif
 
     // ---- P0: A d and A o ---------------------------------------------------
     // A(i,j) -> coefficient index: diagonal i, (0,1) 3, (0,2) 4, (1,2) 5.
@@ -436,6 +450,7 @@ module csgrt_isect #(
         .rst_ni (rst_ni),
         .valid_i(p8_valid),
         .ready_o(en),
+        .ready_next_o(en_next),
         .data_i ({o_leaf, count_d, t0_d, range0_d, enter0_d, t1_d, range1_d, enter1_d, inside_d,
                   o_a, o_b, o_c}),
         .valid_o(valid_o),

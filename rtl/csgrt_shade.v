@@ -175,11 +175,15 @@ module csgrt_shade #(
     wire [1:0] ph_a, ph_b;
     wire       adv_a, adv_b;
     wire       last_a, last_b;   // a beat's last clock
-    csgrt_beat #(.II(II)) u_beat_a (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_o(ph_a), .last_o(last_a),
-                                    .adv_o(adv_a));
-    csgrt_beat #(.II(II)) u_beat_b (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_o(ph_b), .last_o(last_b),
-                                    .adv_o(adv_b));
-    assign s_ready_o = adv_a;
+    wire       en_a_next, en_b_next, adv_a_q, adv_b_q;
+    csgrt_beat #(.II(II)) u_beat_a (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .ce_next_i(en_a_next),
+                                    .phase_o(ph_a), .last_o(last_a), .adv_o(adv_a), .adv_q_o(adv_a_q));
+    csgrt_beat #(.II(II)) u_beat_b (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .ce_next_i(en_b_next),
+                                    .phase_o(ph_b), .last_o(last_b), .adv_o(adv_b), .adv_q_o(adv_b_q));
+    wire unused_adv_b_q = adv_b_q;
+    // the upstream handshake reads the advance's own register, not the
+    // enable net of every stage of segment A (csgrt_beat)
+    assign s_ready_o = adv_a_q;
 
     genvar i, j;
 
@@ -400,7 +404,7 @@ module csgrt_shade #(
     wire [SKAW-1:0]  ska_data;
     csgrt_skid #(.WIDTH(SKAW)) u_skid_a (
         .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(a12_valid && last_a), .ready_o(en_a), .data_i({a12_pix, r_d, a12_n, a12_ps}),
+        .valid_i(a12_valid && last_a), .ready_o(en_a), .ready_next_o(en_a_next), .data_i({a12_pix, r_d, a12_n, a12_ps}),
         .valid_o(ska_valid), .ready_i(ska_ready), .data_o(ska_data));
     wire [3*PSW-1:0] sq_ps  = ska_data[0 +: 3*PSW];
     wire [3*NVW-1:0] sq_n   = ska_data[3*PSW +: 3*NVW];
@@ -804,7 +808,7 @@ module csgrt_shade #(
             wire unused_idx = ^idx_d;
             csgrt_skid #(.WIDTH(24 + 3 * CLW + 3 * SAW)) u_skid_out (
                 .clk_i(clk_i), .rst_ni(rst_ni),
-                .valid_i(c4_valid_q && last_b), .ready_o(en_b), .data_i({c4_spec_q, c4_col_q, c4_xy_q}),
+                .valid_i(c4_valid_q && last_b), .ready_o(en_b), .ready_next_o(en_b_next), .data_i({c4_spec_q, c4_col_q, c4_xy_q}),
                 .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_spec_o, m_local_o, m_y_o, m_x_o}));
             assign {m_r_o, m_g_o, m_b_o} = 24'd0;
         end else begin : g_srgb
@@ -838,7 +842,7 @@ module csgrt_shade #(
         // ---- output skid --------------------------------------------------------------------
         csgrt_skid #(.WIDTH(48)) u_skid_out (
             .clk_i(clk_i), .rst_ni(rst_ni),
-            .valid_i(c5_valid_q && last_b), .ready_o(en_b), .data_i({code, c5_xy_q}),
+            .valid_i(c5_valid_q && last_b), .ready_o(en_b), .ready_next_o(en_b_next), .data_i({code, c5_xy_q}),
             .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_b_o, m_g_o, m_r_o, m_y_o, m_x_o}));
         assign m_local_o = {3*CLW{1'b0}};
         assign m_spec_o  = {3*SAW{1'b0}};

@@ -19,6 +19,7 @@ module csgrt_skid #(
     // upstream
     input  wire             valid_i,
     output wire             ready_o,
+    output wire             ready_next_o,   // ready_o after the next rising edge (csgrt_beat's ce_next_i)
     input  wire [WIDTH-1:0] data_i,
     // downstream
     output wire             valid_o,
@@ -32,6 +33,7 @@ module csgrt_skid #(
     reg [WIDTH-1:0] skid_data_q, skid_data_d;
 
     assign ready_o = !skid_valid_q;
+    assign ready_next_o = !rst_ni || !skid_valid_d;   // the synchronous reset empties the skid
     assign valid_o = out_valid_q;
     assign data_o  = out_data_q;
 

@@ -864,8 +864,10 @@ module csgrt_spawn #(
     wire [1:0] ph_c;
     wire       adv_c;
     wire       last_c;
-    csgrt_beat #(.II(II)) u_beat_c (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_o(ph_c), .last_o(last_c),
-                                    .adv_o(adv_c));
+    wire       en_c_next, adv_c_q;
+    csgrt_beat #(.II(II)) u_beat_c (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .ce_next_i(en_c_next),
+                                    .phase_o(ph_c), .last_o(last_c), .adv_o(adv_c), .adv_q_o(adv_c_q));
+    wire unused_adv_c_q = adv_c_q;
 
     // ---- SEQ: the current hit and its pending children ------------------------------
     reg             cur_valid_q;
@@ -1142,7 +1144,7 @@ module csgrt_spawn #(
     localparam OUTW = 1 + 3 + LW + 3 * B + 1 + 3 * B + (B + 1) + 1 + UW;
     csgrt_skid #(.WIDTH(OUTW)) u_skid (
         .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(u2_valid && last_c), .ready_o(en_c),
+        .valid_i(u2_valid && last_c), .ready_o(en_c), .ready_next_o(en_c_next),
         .data_i({qo_user, o_lit, o_dist, o_dir, qo_inr, qo_p, o_light, o_kind, o_last}),
         .valid_o(m_valid_o), .ready_i(m_ready_i),
         .data_o({m_user_o, m_lit_o, m_dist_o, m_d_o, m_in_range_o, m_o_o, m_light_o, m_kind_o, m_last_o}));

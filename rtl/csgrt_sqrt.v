@@ -53,6 +53,7 @@ module csgrt_sqrt #(
         .user_o (core_user)
     );
 
+    wire unused_en_next;   // no beat here
     csgrt_skid #(
         .WIDTH(RESULT_BITS + USER_WIDTH)
     ) u_skid (
@@ -60,6 +61,7 @@ module csgrt_sqrt #(
         .rst_ni (rst_ni),
         .valid_i(core_valid),
         .ready_o(en),
+        .ready_next_o(unused_en_next),
         .data_i ({core_user, core_root}),
         .valid_o(valid_o),
         .ready_i(ready_i),

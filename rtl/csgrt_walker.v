@@ -216,6 +216,8 @@ module csgrt_walker #(
     wire [LB-1:0] w_sleaf;
     wire [OW-1:0] w_rec;
     wire          sk_ready;
+    wire          sk_ready_next;              // (not needed: the walker has no beat)
+    wire          unused_sk_ready_next = sk_ready_next;
     // The clock enable of the walker, its tree and (through ev_pop_o and
     // ray_done_o) the sorter's drain bank: the skid's ready (a register),
     // not whether the tree's output makes a record this clock: that path
@@ -398,7 +400,7 @@ module csgrt_walker #(
     end
     csgrt_skid #(.WIDTH(OW)) u_out (
         .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(res), .ready_o(sk_ready), .data_i(rec),
+        .valid_i(res), .ready_o(sk_ready), .ready_next_o(sk_ready_next), .data_i(rec),
         .valid_o(valid_o), .ready_i(ready_i), .data_o(rec_o));
     assign {hit_o, t_o, leaf_o, slot_o, entering_o, from_o, to_o, flags_before_o, payload_o} = rec_o[BOW-1:0];
 
