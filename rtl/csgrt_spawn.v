@@ -867,7 +867,9 @@ module csgrt_spawn #(
     wire       en_c_next, adv_c_q;
     csgrt_beat #(.II(II)) u_beat_c (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .ce_next_i(en_c_next),
                                     .phase_o(ph_c), .last_o(last_c), .adv_o(adv_c), .adv_q_o(adv_c_q));
-    wire unused_adv_c_q = adv_c_q;
+    // The sequencing and the queues' handshakes (issue, seq_load, the pops)
+    // read adv_c_q, the advance's own register; adv_c itself enables the
+    // stages' few thousand flip-flops (csgrt_beat)
 
     // ---- SEQ: the current hit and its pending children ------------------------------
     reg             cur_valid_q;
@@ -880,7 +882,7 @@ module csgrt_spawn #(
     reg             cur_tir_q;
 
     wire [FLW-1:0]  pend  = cur_pend_q & FLAG_MASK;   // the kinds this build has
-    wire            issue = adv_c && cur_valid_q;
+    wire            issue = adv_c_q && cur_valid_q;
     wire [FLW-1:0]  pick  = pend & (~pend + {{(FLW-1){1'b0}}, 1'b1});   // lowest pending
     wire [FLW-1:0]  rest  = pend & ~pick;
     wire            last  = (rest == {FLW{1'b0}});
@@ -1119,7 +1121,7 @@ module csgrt_spawn #(
     // ---- the hit's p, d, in_range, user for its children ---------------------------------
     localparam QOW = 6 * B + 1 + UW;
     wire [QOW-1:0] qo_data;
-    wire           qo_pop = adv_c && u2_valid && o_last;
+    wire           qo_pop = adv_c_q && u2_valid && o_last;
     wire           unused_qo_valid;
     csgrt_fifo_block #(.WIDTH(QOW), .DEPTH(CTX)) u_q_out (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(qo_push), .ready_o(qo_ready),
