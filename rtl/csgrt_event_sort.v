@@ -220,7 +220,12 @@ module csgrt_event_sort #(
     reg [NS-1:0]            dflags_q;
     reg [PAYLOAD_WIDTH-1:0] dpay_q;
 
-    wire handover = full_q && !busy_q;
+    // handover = full_q && !busy_q, as a register of its own (loaded with
+    // the next values of both): it selects every cell's next word (about
+    // 5,000 loads), a net better started at a flip-flop than behind a LUT
+    // (tools/logic_depth.py); a simulation stops if it differs
+    reg  handover_q;
+    wire handover = handover_q;
     wire s1_adv   = s1_valid_q && (!full_q || !busy_q);   // the stage inserts into the fill bank
     // INSERTS = 1, two events ahead: this clock inserts a, b stays (split)
     wire s1_split = (INSERTS == 1) && s1_n_q == 2'd2;
@@ -457,7 +462,17 @@ module csgrt_event_sort #(
             if (handover) busy_q <= 1'b1;
             else if (ray_done_i) busy_q <= 1'b0;
         end
+        // the next full_q && !busy_q (both as set just above)
+        handover_q <= rst_ni && ((s1_done && s1_last_q) || (full_q && !handover)) &&
+                      !(handover || (busy_q && !ray_done_i));
     end
+`ifndef SYNTHESIS
+    always @(posedge clk_i)
+        if (rst_ni && handover_q != (full_q && !busy_q)) begin
+            $display("ERROR %m: handover_q differs from full_q && !busy_q");
+            $fatal;
+        end
+`endif
 
 `ifndef SYNTHESIS
     // the registered tests must equal the count's (a simulation stops if not)
