@@ -107,27 +107,38 @@ module csgrt_scene_loader #(
     reg [10*BITS-1:0]     coef_acc_q;     // the leaf being assembled
     reg [MAT_W-11:0]      mat_acc_q;      // the material being assembled: fields without phong_size
 
-    wire in_camera    = idx_q >= off_camera_q    && idx_q < off_lights_q;
-    wire in_lights    = idx_q >= off_lights_q    && idx_q < off_materials_q;
-    wire in_materials = idx_q >= off_materials_q && idx_q < off_leaves_q;
-    wire in_leaves    = idx_q >= off_leaves_q    && idx_q < off_program_q;
-    wire in_tree      = idx_q >= off_tree_q      && idx_q < total_q;
-    wire [31:0] cam_r  = idx_q - off_camera_q;
-    wire [31:0] tree_r = idx_q - off_tree_q;
-    // a section starts: its counters restart
-    wire section_start = (idx_q == off_lights_q) || (idx_q == off_materials_q) || (idx_q == off_leaves_q);
+    // Two stages. Stage 0 takes the arriving word: it parses the header
+    // and works out where the word belongs from its index (32-bit compares
+    // and differences with the section offsets: carry chains). Stage 1,
+    // a clock later, writes it from those registered answers. In one
+    // stage, the compares' carry chains led straight into the enables of
+    // the wide configuration registers (the classification tree's
+    // operators, thousands of flip-flops away: tools/logic_depth.py).
+    // loaded_o rises when stage 1 has written the last word.
+    wire in_camera0    = idx_q >= off_camera_q    && idx_q < off_lights_q;
+    wire in_lights0    = idx_q >= off_lights_q    && idx_q < off_materials_q;
+    wire in_materials0 = idx_q >= off_materials_q && idx_q < off_leaves_q;
+    wire in_leaves0    = idx_q >= off_leaves_q    && idx_q < off_program_q;
+    wire in_tree0      = idx_q >= off_tree_q      && idx_q < total_q;
+    wire [31:0] tree_r0    = idx_q - off_tree_q;
+    wire [31:0] tree_leaf0 = tree_r0 - SLOTS - 1;
+    reg         s1_valid_q, s1_last_q, done0_q;   // done0_q: stage 0 has taken the last word
+    reg  [31:0] s1_w_q, s1_cam_r_q;
+    reg         in_camera, in_lights, in_materials, in_leaves, in_tree, section_start;
+    reg         tree_first_q, tree_op_q, tree_leaf_ok_q;   // tree_r == 0, 1 <= tree_r <= SLOTS, tree_leaf < MAX_LEAVES
+    reg  [TREE_HEIGHT-1:0] op_pos;                        // heap position - 1 (1 <= tree_r <= SLOTS)
+    reg  [LEAF_BITS-1:0]   tree_leaf;
+    wire [31:0] cam_r = s1_cam_r_q;
     wire [3:0] section_size = in_lights ? LIGHT_WORDS[3:0] : in_materials ? MATERIAL_WORDS[3:0] : LEAF_WORDS[3:0];
-    wire [31:0] w = word_i;
+    wire [31:0] w = s1_w_q;   // stage 1's word
     // this word's field and item within the current section
     wire [3:0]  f_now  = section_start ? 4'd0 : field_q;
     wire [31:0] it_now = section_start ? 32'd0 : item_q;
-    wire [31:0] tree_leaf = tree_r - SLOTS - 1;
 
     // Writes into the wide configuration registers go through loops over
     // constant positions (one compare each) rather than part-selects with a
     // computed 32-bit index, which synthesise to barrel shifters thousands
     // of LUTs wide (docs/fpga.md); the positions written are the same.
-    wire [TREE_HEIGHT-1:0] op_pos = tree_r[TREE_HEIGHT-1:0] - 1'b1;   // heap position - 1 (1 <= tree_r <= SLOTS)
     wire [31:0] op32   = {{(32-TREE_HEIGHT){1'b0}}, op_pos};
     wire [31:0] slot32 = {{(32-TREE_HEIGHT){1'b0}}, w[TREE_HEIGHT-1:0]};
     wire [31:0] f32    = {28'd0, f_now};
@@ -137,6 +148,8 @@ module csgrt_scene_loader #(
     always @(posedge clk_i) begin
         if (!rst_ni) begin
             idx_q        <= 32'd0;
+            done0_q      <= 1'b0;
+            s1_valid_q   <= 1'b0;
             loaded_o     <= 1'b0;
             error_o      <= 4'd0;
             slot_used_o  <= {SLOTS{1'b0}};
@@ -149,37 +162,59 @@ module csgrt_scene_loader #(
             total_q      <= 32'hffff_ffff;
             item_q       <= 32'd0;
             field_q      <= 4'd0;
-        end else if (word_valid_i && !loaded_o) begin
+        end else begin
+          s1_valid_q <= 1'b0;
+          if (word_valid_i && !done0_q) begin
+            // ---- stage 0: the index, the header, where the word belongs
             idx_q <= idx_q + 32'd1;
-            if (idx_q + 32'd1 == total_q) loaded_o <= 1'b1;
-
-            // ---- header
+            if (idx_q + 32'd1 == total_q) done0_q <= 1'b1;
+            s1_valid_q    <= 1'b1;
+            s1_last_q     <= idx_q + 32'd1 == total_q;
+            s1_w_q        <= word_i;
+            s1_cam_r_q    <= idx_q - off_camera_q;
+            in_camera     <= in_camera0;
+            in_lights     <= in_lights0;
+            in_materials  <= in_materials0;
+            in_leaves     <= in_leaves0;
+            in_tree       <= in_tree0;
+            // a section starts: its counters restart
+            section_start <= (idx_q == off_lights_q) || (idx_q == off_materials_q) || (idx_q == off_leaves_q);
+            tree_first_q   <= tree_r0 == 32'd0;
+            tree_op_q      <= tree_r0 != 32'd0 && tree_r0 <= SLOTS;
+            tree_leaf_ok_q <= tree_leaf0 < MAX_LEAVES;
+            op_pos         <= tree_r0[TREE_HEIGHT-1:0] - 1'b1;
+            tree_leaf      <= tree_leaf0[LEAF_BITS-1:0];
             if (idx_q < HEADER_WORDS) begin
                 case (idx_q)
-                    H_MAGIC:         if (w != MAGIC) error_o <= 4'd1;
-                    H_VERSION:       if (w != VERSION) error_o <= 4'd1;
-                    H_BITS:          if (w != BITS) error_o <= 4'd2;
-                    H_SIZE:          begin width_o <= w[11:0]; height_o <= w[27:16]; end
+                    H_MAGIC:         if (word_i != MAGIC) error_o <= 4'd1;
+                    H_VERSION:       if (word_i != VERSION) error_o <= 4'd1;
+                    H_BITS:          if (word_i != BITS) error_o <= 4'd2;
+                    H_SIZE:          begin width_o <= word_i[11:0]; height_o <= word_i[27:16]; end
                     H_LEAVES:        begin
-                                         if (w > MAX_LEAVES) error_o <= 4'd3;
-                                         num_leaves_o <= w[LEAF_BITS:0];
+                                         if (word_i > MAX_LEAVES) error_o <= 4'd3;
+                                         num_leaves_o <= word_i[LEAF_BITS:0];
                                      end
-                    H_MATERIALS:     if (w > MAX_MATERIALS + 1) error_o <= 4'd4;
+                    H_MATERIALS:     if (word_i > MAX_MATERIALS + 1) error_o <= 4'd4;
                     H_LIGHTS:        begin
-                                         if (w > MAX_LIGHTS) error_o <= 4'd4;
-                                         num_lights_o <= w[3:0];
+                                         if (word_i > MAX_LIGHTS) error_o <= 4'd4;
+                                         num_lights_o <= word_i[3:0];
                                      end
-                    H_MAX_TRACE:     max_trace_o     <= (w > 32'd255) ? 8'd255 : w[7:0];
-                    H_OFF_CAMERA:    off_camera_q    <= w;
-                    H_OFF_LIGHTS:    off_lights_q    <= w;
-                    H_OFF_MATERIALS: off_materials_q <= w;
-                    H_OFF_LEAVES:    off_leaves_q    <= w;
-                    H_OFF_PROGRAM:   off_program_q   <= w;
-                    H_OFF_TREE:      off_tree_q      <= w;
-                    H_TOTAL:         total_q         <= w;
+                    H_MAX_TRACE:     max_trace_o     <= (word_i > 32'd255) ? 8'd255 : word_i[7:0];
+                    H_OFF_CAMERA:    off_camera_q    <= word_i;
+                    H_OFF_LIGHTS:    off_lights_q    <= word_i;
+                    H_OFF_MATERIALS: off_materials_q <= word_i;
+                    H_OFF_LEAVES:    off_leaves_q    <= word_i;
+                    H_OFF_PROGRAM:   off_program_q   <= word_i;
+                    H_OFF_TREE:      off_tree_q      <= word_i;
+                    H_TOTAL:         total_q         <= word_i;
                     default: ;   // program length, trace depth, stack: not needed here
                 endcase
             end
+          end
+
+          if (s1_valid_q) begin
+            // ---- stage 1: the sections' writes
+            if (s1_last_q) loaded_o <= 1'b1;
 
             // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3)
             if (in_camera) begin
@@ -246,20 +281,21 @@ module csgrt_scene_loader #(
 
             // ---- tree: height, 2^H operators, one slot per leaf
             if (in_tree) begin
-                if (tree_r == 0) begin
+                if (tree_first_q) begin
                     if (w != TREE_HEIGHT) error_o <= 4'd5;
-                end else if (tree_r <= SLOTS) begin
+                end else if (tree_op_q) begin
                     for (j = 0; j < SLOTS; j = j + 1)
                         if (op32 == j) node_op_o[j * 2 +: 2] <= w[1:0];
-                end else if (tree_leaf < MAX_LEAVES) begin
-                    leaf_slot_mem[tree_leaf[LEAF_BITS-1:0]] <= w[TREE_HEIGHT-1:0];
+                end else if (tree_leaf_ok_q) begin
+                    leaf_slot_mem[tree_leaf] <= w[TREE_HEIGHT-1:0];
                     for (j = 0; j < SLOTS; j = j + 1)
                         if (slot32 == j) begin
-                            slot_material_o[j * 8 +: 8] <= leaf_mat_q[tree_leaf[LEAF_BITS-1:0]];
+                            slot_material_o[j * 8 +: 8] <= leaf_mat_q[tree_leaf];
                             slot_used_o[j] <= 1'b1;
                         end
                 end
             end
+          end
         end
     end
 
