@@ -216,8 +216,7 @@ module csgrt_walker #(
     wire [LB-1:0] w_sleaf;
     wire [OW-1:0] w_rec;
     wire          sk_ready;
-    wire          sk_ready_next;              // (not needed: the walker has no beat)
-    wire          unused_sk_ready_next = sk_ready_next;
+    wire          sk_ready_next;              // sk_ready after the next edge (csgrt_skid)
     // The clock enable of the walker, its tree and (through ev_pop_o and
     // ray_done_o) the sorter's drain bank: the skid's ready (a register),
     // not whether the tree's output makes a record this clock: that path
@@ -226,6 +225,22 @@ module csgrt_walker #(
     // and no record is due, only under back-pressure. (With LOOK_AHEAD the
     // wait for an answer, from the tree's output, stalls it too.)
     wire          ce = sk_ready && !la_stall;
+    // The issue logic (issue, load, ray_done_o and so ev_pop_o, which fans
+    // out to the sorter's 128 drain cells) reads sk_ready again from a
+    // register of its own, loaded with the skid's next ready: the skid's
+    // register itself enables the tree's and the walker's stages (about
+    // 2,300 flip-flops), and the pop decision continued that net
+    // (tools/logic_depth.py). A simulation stops if the two differ.
+    reg           ctl_ready_q;
+    always @(posedge clk_i) ctl_ready_q <= sk_ready_next;
+    wire          ce_ctl = ctl_ready_q && !la_stall;   // = ce
+`ifndef SYNTHESIS
+    always @(posedge clk_i)
+        if (rst_ni && ctl_ready_q != sk_ready) begin
+            $display("ERROR %m: ctl_ready_q differs from the output skid's ready");
+            $fatal;
+        end
+`endif
 
     // ---- issue --------------------------------------------------------------
     // The hit's surface (docs/numerics.md section 5): an event at the same t
@@ -242,7 +257,7 @@ module csgrt_walker #(
     // in the clock its hit comes out of the tree one more token issues,
     // which the tree's output drops (done_q is set by then).
     wire          stop   = done_q[seq_q];
-    wire          issue  = ce && act_q && !stop;
+    wire          issue  = ce_ctl && act_q && !stop;
     // the event sorter compares the head's t with the previously popped
     // event's (registered, ev_same_t_i): no comparator on the pop path
     wire          later  = ev_valid_i && gv_q && ev_same_t_i;
@@ -253,9 +268,9 @@ module csgrt_walker #(
     wire          crossing = issue && !probe && ev_valid_i;   // a walk token of an event
     wire          last   = !probe && (!ev_valid_i || ev_last_i);
     wire          in_fl_next;                 // a token of bank !seq_q in flight
-    wire          load   = ce && !act_q && ray_valid_i && !in_fl_next;
+    wire          load   = ce_ctl && !act_q && ray_valid_i && !in_fl_next;
     assign ev_pop_o   = issue && ev_valid_i && !probe;
-    assign ray_done_o = ce && act_q && (stop || last);
+    assign ray_done_o = ce_ctl && act_q && (stop || last);
 
     wire [BGW-1:0] tag_base = {seq_q, skip, last, probe, later, ev_t_i, ev_leaf_i, ev_slot_i, ev_entering_i};
     wire [GW-1:0]  tag_in;
