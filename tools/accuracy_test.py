@@ -18,10 +18,10 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import time
-import traceback
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from gtest_report import check, run_suite  # noqa: E402
 TOOL = os.path.join(ROOT, "tools", "accuracy.py")
 BITS = 16
 SCENE = "scenes/paper/fig06_add_shared.pov"
@@ -36,15 +36,6 @@ def load_tool():
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod
-
-
-class Failure(Exception):
-    pass
-
-
-def check(cond, what):
-    if not cond:
-        raise Failure(what)
 
 
 def sweep(tmp, *extra):
@@ -190,29 +181,10 @@ TESTS = [("SweepRows", test_sweep_rows), ("Resume", test_resume), ("RedoRtl", te
 def main():
     # run_tests.sh passes googletest flags (--gtest_color=no): nothing to do with them
     ctx = {"tmp": tempfile.mkdtemp(prefix="csgrt-accuracy-")}
-    print(f"[==========] Running {len(TESTS)} tests from 1 test suite.", flush=True)
-    failed = []
     try:
-        for name, fn in TESTS:
-            print(f"[ RUN      ] Accuracy.{name}", flush=True)
-            t0 = time.time()
-            try:
-                fn(ctx)
-                print(f"[       OK ] Accuracy.{name} ({int(1000 * (time.time() - t0))} ms)", flush=True)
-            except Exception as e:
-                msg = str(e) if isinstance(e, Failure) else traceback.format_exc()
-                print(f"tools/accuracy_test.py: Failure in Accuracy.{name}\n{msg}")
-                print(f"[  FAILED  ] Accuracy.{name} ({int(1000 * (time.time() - t0))} ms)", flush=True)
-                failed.append(name)
+        return run_suite("Accuracy", TESTS, ctx, "tools/accuracy_test.py")
     finally:
         shutil.rmtree(ctx["tmp"], ignore_errors=True)
-    print(f"[==========] {len(TESTS)} tests from 1 test suite ran.")
-    print(f"[  PASSED  ] {len(TESTS) - len(failed)} tests.")
-    if failed:
-        print(f"[  FAILED  ] {len(failed)} tests, listed below:")
-        for f in failed:
-            print(f"[  FAILED  ] Accuracy.{f}")
-    return 1 if failed else 0
 
 
 if __name__ == "__main__":

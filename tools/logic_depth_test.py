@@ -11,28 +11,20 @@ Prints googletest-style lines so that tools/run_tests.sh counts its tests.
 import importlib.util
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
-import time
-import traceback
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 TOOL = os.path.join(ROOT, "tools", "logic_depth.py")
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from gtest_report import Failure, check, run_suite  # noqa: E402
 spec = importlib.util.spec_from_file_location("logic_depth", TOOL)
 ld = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(ld)
 
 CLK = 1
-
-
-class Failure(Exception):
-    pass
-
-
-def check(cond, msg):
-    if not cond:
-        raise Failure(msg)
 
 
 def near(a, b):
@@ -156,26 +148,10 @@ TESTS = [("Chain", test_chain), ("FanoutCost", test_fanout_cost), ("Carry", test
 
 def main():
     ctx = {"tmp": tempfile.mkdtemp(prefix="csgrt-logic-depth-")}
-    print(f"[==========] Running {len(TESTS)} tests from 1 test suite.", flush=True)
-    failed = []
-    for name, fn in TESTS:
-        print(f"[ RUN      ] LogicDepth.{name}", flush=True)
-        t0 = time.time()
-        try:
-            fn(ctx)
-            print(f"[       OK ] LogicDepth.{name} ({int(1000 * (time.time() - t0))} ms)", flush=True)
-        except Exception as e:
-            msg = str(e) if isinstance(e, Failure) else traceback.format_exc()
-            print(f"tools/logic_depth_test.py: Failure in LogicDepth.{name}\n{msg}")
-            print(f"[  FAILED  ] LogicDepth.{name} ({int(1000 * (time.time() - t0))} ms)", flush=True)
-            failed.append(name)
-    print(f"[==========] {len(TESTS)} tests from 1 test suite ran.")
-    print(f"[  PASSED  ] {len(TESTS) - len(failed)} tests.")
-    if failed:
-        print(f"[  FAILED  ] {len(failed)} tests, listed below:")
-        for f in failed:
-            print(f"[  FAILED  ] LogicDepth.{f}")
-    return 1 if failed else 0
+    try:
+        return run_suite("LogicDepth", TESTS, ctx, "tools/logic_depth_test.py")
+    finally:
+        shutil.rmtree(ctx["tmp"], ignore_errors=True)
 
 
 if __name__ == "__main__":
