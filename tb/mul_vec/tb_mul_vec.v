@@ -1,7 +1,9 @@
 `default_nettype none
 // tb_mul_vec — Verilator top for tb_mul_vec.cpp: csgrt_mul_vec time-shared
 // (II = 3) with one, two and three products, and unshared (II = 1) with
-// three, each on its own csgrt_beat from one clock enable. Operand slots
+// three, each on its own csgrt_beat from one clock enable (and its value
+// after the next edge, ce_next_i, for the beats' registered advance
+// adv_q_o, which must equal adv_o on every clock). Operand slots
 // are MAXW bits, products 2 MAXW bits (sign-extended); the widths are
 // kInst in tb_mul_vec.cpp.
 module tb_mul_vec #(
@@ -10,17 +12,22 @@ module tb_mul_vec #(
     input  wire              clk_i,
     input  wire              rst_ni,
     input  wire              ce_i,
+    input  wire              ce_next_i,  // ce_i after the next rising edge
     output wire [1:0]        phase3_o,   // the II = 3 beat
     output wire              adv3_o,
     output wire              adv1_o,     // the II = 1 beat (= ce_i)
+    output wire              adv3_q_o,   // the beats' registered advances
+    output wire              adv1_q_o,
     input  wire [4*3*MAXW-1:0] a_i,      // instance k, pair j at (3k+j)*MAXW
     input  wire [4*3*MAXW-1:0] b_i,
     output wire [4*3*2*MAXW-1:0] p_o     // instance k, product j at (3k+j)*2*MAXW
 );
     wire [1:0] phase1;
     wire       unused_last3, unused_last1;
-    csgrt_beat #(.II(3)) u_beat3 (.clk_i, .rst_ni, .ce_i, .phase_o(phase3_o), .last_o(unused_last3), .adv_o(adv3_o));
-    csgrt_beat #(.II(1)) u_beat1 (.clk_i, .rst_ni, .ce_i, .phase_o(phase1), .last_o(unused_last1), .adv_o(adv1_o));
+    csgrt_beat #(.II(3)) u_beat3 (.clk_i, .rst_ni, .ce_i, .ce_next_i, .phase_o(phase3_o), .last_o(unused_last3),
+                                  .adv_o(adv3_o), .adv_q_o(adv3_q_o));
+    csgrt_beat #(.II(1)) u_beat1 (.clk_i, .rst_ni, .ce_i, .ce_next_i, .phase_o(phase1), .last_o(unused_last1),
+                                  .adv_o(adv1_o), .adv_q_o(adv1_q_o));
 
     // instance k: {A width, B width, N, II}
     function automatic integer wa(input integer k);
