@@ -124,22 +124,22 @@ module csgrt_scene_loader #(
     wire [31:0] tree_leaf0 = tree_r0 - SLOTS - 1;
     reg         s1_valid_q, s1_last_q, done0_q;   // done0_q: stage 0 has taken the last word
     reg  [31:0] s1_w_q, s1_cam_r_q;
-    reg         in_camera, in_lights, in_materials, in_leaves, in_tree, section_start;
+    reg         in_camera_q, in_lights_q, in_materials_q, in_leaves_q, in_tree_q, section_start_q;
     reg         tree_first_q, tree_op_q, tree_leaf_ok_q;   // tree_r == 0, 1 <= tree_r <= SLOTS, tree_leaf < MAX_LEAVES
-    reg  [TREE_HEIGHT-1:0] op_pos;                        // heap position - 1 (1 <= tree_r <= SLOTS)
-    reg  [LEAF_BITS-1:0]   tree_leaf;
+    reg  [TREE_HEIGHT-1:0] op_pos_q;                      // heap position - 1 (1 <= tree_r <= SLOTS)
+    reg  [LEAF_BITS-1:0]   tree_leaf_q;
     wire [31:0] cam_r = s1_cam_r_q;
-    wire [3:0] section_size = in_lights ? LIGHT_WORDS[3:0] : in_materials ? MATERIAL_WORDS[3:0] : LEAF_WORDS[3:0];
+    wire [3:0] section_size = in_lights_q ? LIGHT_WORDS[3:0] : in_materials_q ? MATERIAL_WORDS[3:0] : LEAF_WORDS[3:0];
     wire [31:0] w = s1_w_q;   // stage 1's word
     // this word's field and item within the current section
-    wire [3:0]  f_now  = section_start ? 4'd0 : field_q;
-    wire [31:0] it_now = section_start ? 32'd0 : item_q;
+    wire [3:0]  f_now  = section_start_q ? 4'd0 : field_q;
+    wire [31:0] it_now = section_start_q ? 32'd0 : item_q;
 
     // Writes into the wide configuration registers go through loops over
     // constant positions (one compare each) rather than part-selects with a
     // computed 32-bit index, which synthesise to barrel shifters thousands
     // of LUTs wide (docs/fpga.md); the positions written are the same.
-    wire [31:0] op32   = {{(32-TREE_HEIGHT){1'b0}}, op_pos};
+    wire [31:0] op32   = {{(32-TREE_HEIGHT){1'b0}}, op_pos_q};
     wire [31:0] slot32 = {{(32-TREE_HEIGHT){1'b0}}, w[TREE_HEIGHT-1:0]};
     wire [31:0] f32    = {28'd0, f_now};
 
@@ -163,139 +163,139 @@ module csgrt_scene_loader #(
             item_q       <= 32'd0;
             field_q      <= 4'd0;
         end else begin
-          s1_valid_q <= 1'b0;
-          if (word_valid_i && !done0_q) begin
-            // ---- stage 0: the index, the header, where the word belongs
-            idx_q <= idx_q + 32'd1;
-            if (idx_q + 32'd1 == total_q) done0_q <= 1'b1;
-            s1_valid_q    <= 1'b1;
-            s1_last_q     <= idx_q + 32'd1 == total_q;
-            s1_w_q        <= word_i;
-            s1_cam_r_q    <= idx_q - off_camera_q;
-            in_camera     <= in_camera0;
-            in_lights     <= in_lights0;
-            in_materials  <= in_materials0;
-            in_leaves     <= in_leaves0;
-            in_tree       <= in_tree0;
-            // a section starts: its counters restart
-            section_start <= (idx_q == off_lights_q) || (idx_q == off_materials_q) || (idx_q == off_leaves_q);
-            tree_first_q   <= tree_r0 == 32'd0;
-            tree_op_q      <= tree_r0 != 32'd0 && tree_r0 <= SLOTS;
-            tree_leaf_ok_q <= tree_leaf0 < MAX_LEAVES;
-            op_pos         <= tree_r0[TREE_HEIGHT-1:0] - 1'b1;
-            tree_leaf      <= tree_leaf0[LEAF_BITS-1:0];
-            if (idx_q < HEADER_WORDS) begin
-                case (idx_q)
-                    H_MAGIC:         if (word_i != MAGIC) error_o <= 4'd1;
-                    H_VERSION:       if (word_i != VERSION) error_o <= 4'd1;
-                    H_BITS:          if (word_i != BITS) error_o <= 4'd2;
-                    H_SIZE:          begin width_o <= word_i[11:0]; height_o <= word_i[27:16]; end
-                    H_LEAVES:        begin
-                                         if (word_i > MAX_LEAVES) error_o <= 4'd3;
-                                         num_leaves_o <= word_i[LEAF_BITS:0];
-                                     end
-                    H_MATERIALS:     if (word_i > MAX_MATERIALS + 1) error_o <= 4'd4;
-                    H_LIGHTS:        begin
-                                         if (word_i > MAX_LIGHTS) error_o <= 4'd4;
-                                         num_lights_o <= word_i[3:0];
-                                     end
-                    H_MAX_TRACE:     max_trace_o     <= (word_i > 32'd255) ? 8'd255 : word_i[7:0];
-                    H_OFF_CAMERA:    off_camera_q    <= word_i;
-                    H_OFF_LIGHTS:    off_lights_q    <= word_i;
-                    H_OFF_MATERIALS: off_materials_q <= word_i;
-                    H_OFF_LEAVES:    off_leaves_q    <= word_i;
-                    H_OFF_PROGRAM:   off_program_q   <= word_i;
-                    H_OFF_TREE:      off_tree_q      <= word_i;
-                    H_TOTAL:         total_q         <= word_i;
-                    default: ;   // program length, trace depth, stack: not needed here
-                endcase
-            end
-          end
-
-          if (s1_valid_q) begin
-            // ---- stage 1: the sections' writes
-            if (s1_last_q) loaded_o <= 1'b1;
-
-            // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3)
-            if (in_camera) begin
-                for (j = 0; j < 3; j = j + 1)
-                    if (cam_r == j) cam_origin_o[j*BITS +: BITS] <= w[BITS-1:0];
-                for (j = 0; j < 6; j = j + 1) begin
-                    if (cam_r == 3 + j)  cam_base_o[j*32 +: 32] <= w;
-                    if (cam_r == 9 + j)  cam_dx_o[j*32 +: 32] <= w;
-                    if (cam_r == 15 + j) cam_dy_o[j*32 +: 32] <= w;
-                end
-                for (j = 0; j < 3; j = j + 1)
-                    if (cam_r == 21 + j) background_o[j*16 +: 16] <= w[15:0];
-            end
-
-            // ---- lights, materials, leaves: item / field counters
-            if (in_lights || in_materials || in_leaves) begin
-                if (section_start || field_q + 4'd1 == section_size) begin
-                    field_q <= section_start ? 4'd1 : 4'd0;
-                    item_q  <= section_start ? 32'd0 : item_q + 32'd1;
-                end else begin
-                    field_q <= field_q + 4'd1;
-                end
-            end
-            // f_now < LIGHT_WORDS = 7 here: the field counter wraps at the section size
-            if (in_lights && it_now < MAX_LIGHTS) begin
-                for (j = 0; j < MAX_LIGHTS; j = j + 1) begin
-                    for (f = 0; f < 3; f = f + 1)
-                        if (it_now == j && f32 == f) light_pos_o[(j*3 + f) * BITS +: BITS] <= w[BITS-1:0];
-                    for (f = 3; f < 6; f = f + 1)
-                        if (it_now == j && f32 == f) light_col_o[(j*3 + f - 3) * 16 +: 16] <= w[15:0];
-                    if (it_now == j && f32 == 6) light_shadowless_o[j] <= w[0];
-                end
-            end
-            if (in_materials) begin
-                // words: r g b filter ambient diffuse phong reflection ior phong_size
-                case (f_now)
-                    4'd0: mat_acc_q[0  +: 16] <= w[15:0];
-                    4'd1: mat_acc_q[16 +: 16] <= w[15:0];
-                    4'd2: mat_acc_q[32 +: 16] <= w[15:0];
-                    4'd4: mat_acc_q[48 +: 16] <= w[15:0];
-                    4'd5: mat_acc_q[64 +: 16] <= w[15:0];
-                    4'd6: mat_acc_q[80 +: 16] <= w[15:0];
-                    4'd7: mat_acc_q[96 +: 16] <= w[15:0];
-                    4'd3: mat_acc_q[112 +: 16] <= w[15:0];   // filter
-                    4'd8: mat_acc_q[128 +: 16] <= w[15:0];   // ior
-                    4'd9: if (it_now < MAX_MATERIALS) begin
-                              mat_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], w[9:0],
-                                                              mat_acc_q[111:0]};
-                              ior_mem[it_now[7:0] + 8'd1] <= mat_acc_q[128 +: 16];
-                              mat_clear_o[it_now[7:0] + 8'd1] <= mat_acc_q[112 +: 16] != 16'd0;
-                          end
-                    default: ;
-                endcase
-            end
-            if (in_leaves) begin
-                if (f_now < 10) begin
-                    for (f = 0; f < 10; f = f + 1)
-                        if (f32 == f) coef_acc_q[f * BITS +: BITS] <= w[BITS-1:0];
-                end else if (it_now < MAX_LEAVES) begin
-                    leaf_coef_mem[it_now[LEAF_BITS-1:0]] <= coef_acc_q;
-                    leaf_mat_q[it_now[LEAF_BITS-1:0]]    <= w[7:0];
+            s1_valid_q <= 1'b0;
+            if (word_valid_i && !done0_q) begin
+                // ---- stage 0: the index, the header, where the word belongs
+                idx_q <= idx_q + 32'd1;
+                if (idx_q + 32'd1 == total_q) done0_q <= 1'b1;
+                s1_valid_q      <= 1'b1;
+                s1_last_q       <= idx_q + 32'd1 == total_q;
+                s1_w_q          <= word_i;
+                s1_cam_r_q      <= idx_q - off_camera_q;
+                in_camera_q     <= in_camera0;
+                in_lights_q     <= in_lights0;
+                in_materials_q  <= in_materials0;
+                in_leaves_q     <= in_leaves0;
+                in_tree_q       <= in_tree0;
+                // a section starts: its counters restart
+                section_start_q <= (idx_q == off_lights_q) || (idx_q == off_materials_q) || (idx_q == off_leaves_q);
+                tree_first_q    <= tree_r0 == 32'd0;
+                tree_op_q       <= tree_r0 != 32'd0 && tree_r0 <= SLOTS;
+                tree_leaf_ok_q  <= tree_leaf0 < MAX_LEAVES;
+                op_pos_q        <= tree_r0[TREE_HEIGHT-1:0] - 1'b1;
+                tree_leaf_q     <= tree_leaf0[LEAF_BITS-1:0];
+                if (idx_q < HEADER_WORDS) begin
+                    case (idx_q)
+                        H_MAGIC:         if (word_i != MAGIC) error_o <= 4'd1;
+                        H_VERSION:       if (word_i != VERSION) error_o <= 4'd1;
+                        H_BITS:          if (word_i != BITS) error_o <= 4'd2;
+                        H_SIZE:          begin width_o <= word_i[11:0]; height_o <= word_i[27:16]; end
+                        H_LEAVES:        begin
+                                             if (word_i > MAX_LEAVES) error_o <= 4'd3;
+                                             num_leaves_o <= word_i[LEAF_BITS:0];
+                                         end
+                        H_MATERIALS:     if (word_i > MAX_MATERIALS + 1) error_o <= 4'd4;
+                        H_LIGHTS:        begin
+                                             if (word_i > MAX_LIGHTS) error_o <= 4'd4;
+                                             num_lights_o <= word_i[3:0];
+                                         end
+                        H_MAX_TRACE:     max_trace_o     <= (word_i > 32'd255) ? 8'd255 : word_i[7:0];
+                        H_OFF_CAMERA:    off_camera_q    <= word_i;
+                        H_OFF_LIGHTS:    off_lights_q    <= word_i;
+                        H_OFF_MATERIALS: off_materials_q <= word_i;
+                        H_OFF_LEAVES:    off_leaves_q    <= word_i;
+                        H_OFF_PROGRAM:   off_program_q   <= word_i;
+                        H_OFF_TREE:      off_tree_q      <= word_i;
+                        H_TOTAL:         total_q         <= word_i;
+                        default: ;   // program length, trace depth, stack: not needed here
+                    endcase
                 end
             end
 
-            // ---- tree: height, 2^H operators, one slot per leaf
-            if (in_tree) begin
-                if (tree_first_q) begin
-                    if (w != TREE_HEIGHT) error_o <= 4'd5;
-                end else if (tree_op_q) begin
-                    for (j = 0; j < SLOTS; j = j + 1)
-                        if (op32 == j) node_op_o[j * 2 +: 2] <= w[1:0];
-                end else if (tree_leaf_ok_q) begin
-                    leaf_slot_mem[tree_leaf] <= w[TREE_HEIGHT-1:0];
-                    for (j = 0; j < SLOTS; j = j + 1)
-                        if (slot32 == j) begin
-                            slot_material_o[j * 8 +: 8] <= leaf_mat_q[tree_leaf];
-                            slot_used_o[j] <= 1'b1;
-                        end
+            if (s1_valid_q) begin
+                // ---- stage 1: the sections' writes
+                if (s1_last_q) loaded_o <= 1'b1;
+
+                // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3)
+                if (in_camera_q) begin
+                    for (j = 0; j < 3; j = j + 1)
+                        if (cam_r == j) cam_origin_o[j*BITS +: BITS] <= w[BITS-1:0];
+                    for (j = 0; j < 6; j = j + 1) begin
+                        if (cam_r == 3 + j)  cam_base_o[j*32 +: 32] <= w;
+                        if (cam_r == 9 + j)  cam_dx_o[j*32 +: 32] <= w;
+                        if (cam_r == 15 + j) cam_dy_o[j*32 +: 32] <= w;
+                    end
+                    for (j = 0; j < 3; j = j + 1)
+                        if (cam_r == 21 + j) background_o[j*16 +: 16] <= w[15:0];
+                end
+
+                // ---- lights, materials, leaves: item / field counters
+                if (in_lights_q || in_materials_q || in_leaves_q) begin
+                    if (section_start_q || field_q + 4'd1 == section_size) begin
+                        field_q <= section_start_q ? 4'd1 : 4'd0;
+                        item_q  <= section_start_q ? 32'd0 : item_q + 32'd1;
+                    end else begin
+                        field_q <= field_q + 4'd1;
+                    end
+                end
+                // f_now < LIGHT_WORDS = 7 here: the field counter wraps at the section size
+                if (in_lights_q && it_now < MAX_LIGHTS) begin
+                    for (j = 0; j < MAX_LIGHTS; j = j + 1) begin
+                        for (f = 0; f < 3; f = f + 1)
+                            if (it_now == j && f32 == f) light_pos_o[(j*3 + f) * BITS +: BITS] <= w[BITS-1:0];
+                        for (f = 3; f < 6; f = f + 1)
+                            if (it_now == j && f32 == f) light_col_o[(j*3 + f - 3) * 16 +: 16] <= w[15:0];
+                        if (it_now == j && f32 == 6) light_shadowless_o[j] <= w[0];
+                    end
+                end
+                if (in_materials_q) begin
+                    // words: r g b filter ambient diffuse phong reflection ior phong_size
+                    case (f_now)
+                        4'd0: mat_acc_q[0  +: 16] <= w[15:0];
+                        4'd1: mat_acc_q[16 +: 16] <= w[15:0];
+                        4'd2: mat_acc_q[32 +: 16] <= w[15:0];
+                        4'd4: mat_acc_q[48 +: 16] <= w[15:0];
+                        4'd5: mat_acc_q[64 +: 16] <= w[15:0];
+                        4'd6: mat_acc_q[80 +: 16] <= w[15:0];
+                        4'd7: mat_acc_q[96 +: 16] <= w[15:0];
+                        4'd3: mat_acc_q[112 +: 16] <= w[15:0];   // filter
+                        4'd8: mat_acc_q[128 +: 16] <= w[15:0];   // ior
+                        4'd9: if (it_now < MAX_MATERIALS) begin
+                                  mat_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], w[9:0],
+                                                                  mat_acc_q[111:0]};
+                                  ior_mem[it_now[7:0] + 8'd1] <= mat_acc_q[128 +: 16];
+                                  mat_clear_o[it_now[7:0] + 8'd1] <= mat_acc_q[112 +: 16] != 16'd0;
+                              end
+                        default: ;
+                    endcase
+                end
+                if (in_leaves_q) begin
+                    if (f_now < 10) begin
+                        for (f = 0; f < 10; f = f + 1)
+                            if (f32 == f) coef_acc_q[f * BITS +: BITS] <= w[BITS-1:0];
+                    end else if (it_now < MAX_LEAVES) begin
+                        leaf_coef_mem[it_now[LEAF_BITS-1:0]] <= coef_acc_q;
+                        leaf_mat_q[it_now[LEAF_BITS-1:0]]    <= w[7:0];
+                    end
+                end
+
+                // ---- tree: height, 2^H operators, one slot per leaf
+                if (in_tree_q) begin
+                    if (tree_first_q) begin
+                        if (w != TREE_HEIGHT) error_o <= 4'd5;
+                    end else if (tree_op_q) begin
+                        for (j = 0; j < SLOTS; j = j + 1)
+                            if (op32 == j) node_op_o[j * 2 +: 2] <= w[1:0];
+                    end else if (tree_leaf_ok_q) begin
+                        leaf_slot_mem[tree_leaf_q] <= w[TREE_HEIGHT-1:0];
+                        for (j = 0; j < SLOTS; j = j + 1)
+                            if (slot32 == j) begin
+                                slot_material_o[j * 8 +: 8] <= leaf_mat_q[tree_leaf_q];
+                                slot_used_o[j] <= 1'b1;
+                            end
+                    end
                 end
             end
-          end
         end
     end
 
