@@ -14,10 +14,8 @@ import csv
 import importlib.util
 import math
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
@@ -178,14 +176,5 @@ TESTS = [("SweepRows", test_sweep_rows), ("Resume", test_resume), ("RedoRtl", te
          ("Helpers", test_helpers)]
 
 
-def main():
-    # run_tests.sh passes googletest flags (--gtest_color=no): nothing to do with them
-    ctx = {"tmp": tempfile.mkdtemp(prefix="csgrt-accuracy-")}
-    try:
-        return run_suite("Accuracy", TESTS, ctx, "tools/accuracy_test.py")
-    finally:
-        shutil.rmtree(ctx["tmp"], ignore_errors=True)
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_suite("Accuracy", TESTS, "tools/accuracy_test.py"))

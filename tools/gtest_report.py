@@ -5,6 +5,8 @@ tools/run_tests.sh counts a binary's tests from googletest's summary lines
 (tools/accuracy_test.py, tools/logic_depth_test.py) print the same lines
 through run_suite, so that they are counted like the C++ ones.
 """
+import shutil
+import tempfile
 import time
 import traceback
 
@@ -18,8 +20,18 @@ def check(cond, what):
         raise Failure(what)
 
 
-def run_suite(suite, tests, ctx, source):
-    """Runs [(name, fn(ctx))] in order; prints googletest's lines; returns the exit status."""
+def run_suite(suite, tests, source):
+    """Runs [(name, fn(ctx))] in order, ctx["tmp"] a temporary folder they share (removed
+    afterwards); prints googletest's lines; returns the exit status. run_tests.sh passes
+    googletest flags (--gtest_color=no): nothing to do with them."""
+    ctx = {"tmp": tempfile.mkdtemp(prefix=f"csgrt-{suite.lower()}-")}
+    try:
+        return _run(suite, tests, ctx, source)
+    finally:
+        shutil.rmtree(ctx["tmp"], ignore_errors=True)
+
+
+def _run(suite, tests, ctx, source):
     print(f"[==========] Running {len(tests)} tests from 1 test suite.", flush=True)
     failed = []
     for name, fn in tests:

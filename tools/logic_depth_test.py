@@ -11,10 +11,8 @@ Prints googletest-style lines so that tools/run_tests.sh counts its tests.
 import importlib.util
 import json
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 TOOL = os.path.join(ROOT, "tools", "logic_depth.py")
@@ -146,13 +144,5 @@ TESTS = [("Chain", test_chain), ("FanoutCost", test_fanout_cost), ("Carry", test
          ("BlockRam", test_block_ram), ("Loop", test_loop), ("Cli", test_cli)]
 
 
-def main():
-    ctx = {"tmp": tempfile.mkdtemp(prefix="csgrt-logic-depth-")}
-    try:
-        return run_suite("LogicDepth", TESTS, ctx, "tools/logic_depth_test.py")
-    finally:
-        shutil.rmtree(ctx["tmp"], ignore_errors=True)
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_suite("LogicDepth", TESTS, "tools/logic_depth_test.py"))
