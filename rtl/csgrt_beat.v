@@ -58,8 +58,11 @@ module csgrt_beat #(
         end
 
 `ifndef SYNTHESIS
+        // checked from the first reset on (registers start undefined before it)
+        reg reset_seen_q = 1'b0;
+        always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
         always @(posedge clk_i)
-            if (rst_ni && adv_q != adv_o) begin
+            if (rst_ni && reset_seen_q && adv_q != adv_o) begin
                 $display("ERROR %m: adv_q_o differs from adv_o (is ce_next_i the enable's next value?)");
                 $fatal;
             end

@@ -467,8 +467,11 @@ module csgrt_event_sort #(
                       !(handover || (busy_q && !ray_done_i));
     end
 `ifndef SYNTHESIS
+    // checked from the first reset on (registers start undefined before it)
+    reg reset_seen_q = 1'b0;
+    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
     always @(posedge clk_i)
-        if (rst_ni && handover_q != (full_q && !busy_q)) begin
+        if (rst_ni && reset_seen_q && handover_q != (full_q && !busy_q)) begin
             $display("ERROR %m: handover_q differs from full_q && !busy_q");
             $fatal;
         end
@@ -477,7 +480,7 @@ module csgrt_event_sort #(
 `ifndef SYNTHESIS
     // the registered tests must equal the count's (a simulation stops if not)
     always @(posedge clk_i)
-        if (rst_ni && (dne_q != (busy_q && dcnt_q != {NB{1'b0}}) ||
+        if (rst_ni && reset_seen_q && (dne_q != (busy_q && dcnt_q != {NB{1'b0}}) ||
                        (busy_q && dlast_q != (dcnt_q == {{(NB-1){1'b0}}, 1'b1})))) begin
             $display("ERROR %m: dne_q / dlast_q out of step with the drain count");
             $fatal;

@@ -59,8 +59,11 @@ module csgrt_fifo #(
         end
     end
 `ifndef SYNTHESIS
+    // checked from the first reset on (registers start undefined before it)
+    reg reset_seen_q = 1'b0;
+    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
     always @(posedge clk_i)
-        if (rst_ni && (empty_q != (wr_q == rd_q) ||
+        if (rst_ni && reset_seen_q && (empty_q != (wr_q == rd_q) ||
                        full_q != (wr_q[AW-1:0] == rd_q[AW-1:0] && wr_q[AW] != rd_q[AW]))) begin
             $display("ERROR %m: the empty / full registers are out of step with the pointers");
             $fatal;

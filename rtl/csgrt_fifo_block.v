@@ -101,8 +101,11 @@ module csgrt_fifo_block #(
     end
 `ifndef SYNTHESIS
     // the flags must equal the pointers' compares (a simulation stops if not)
+    // checked from the first reset on (registers start undefined before it)
+    reg reset_seen_q = 1'b0;
+    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
     always @(posedge clk_i)
-        if (rst_ni && (ram_empty_q != (wr_q == rd_q) ||
+        if (rst_ni && reset_seen_q && (ram_empty_q != (wr_q == rd_q) ||
                        ram_full_q != (wr_q[AW-1:0] == rd_q[AW-1:0] && wr_q[AW] != rd_q[AW]))) begin
             $display("ERROR %m: the empty / full registers are out of step with the pointers");
             $fatal;

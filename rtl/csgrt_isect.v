@@ -113,8 +113,11 @@ module csgrt_isect #(
     always @(posedge clk_i) ready_q <= en_next;
     assign ready_o = ready_q;
 `ifndef SYNTHESIS
+    // checked from the first reset on (registers start undefined before it)
+    reg reset_seen_q = 1'b0;
+    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
     always @(posedge clk_i)
-        if (rst_ni && ready_q != en) begin
+        if (rst_ni && reset_seen_q && ready_q != en) begin
             $display("ERROR %m: ready_q differs from the skid's ready");
             $fatal;
         end

@@ -235,8 +235,11 @@ module csgrt_walker #(
     always @(posedge clk_i) ctl_ready_q <= sk_ready_next;
     wire          ce_ctl = ctl_ready_q && !la_stall;   // = ce
 `ifndef SYNTHESIS
+    // checked from the first reset on (registers start undefined before it)
+    reg reset_seen_q = 1'b0;
+    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
     always @(posedge clk_i)
-        if (rst_ni && ctl_ready_q != sk_ready) begin
+        if (rst_ni && reset_seen_q && ctl_ready_q != sk_ready) begin
             $display("ERROR %m: ctl_ready_q differs from the output skid's ready");
             $fatal;
         end
