@@ -57,16 +57,8 @@ module csgrt_beat #(
                 adv_q <= ce_next_i && rst_ni && (ce_i ? phase_q == 2'd1 : phase_q == 2'd2);
         end
 
-`ifndef SYNTHESIS
-        // checked from the first reset on (registers start undefined before it)
-        reg reset_seen_q = 1'b0;
-        always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
-        always @(posedge clk_i)
-            if (rst_ni && reset_seen_q && adv_q != adv_o) begin
-                $display("ERROR %m: adv_q_o differs from adv_o (is ce_next_i the enable's next value?)");
-                $fatal;
-            end
-`endif
+        csgrt_check_same #(.WHAT("adv_q_o (is ce_next_i the enable's next value?)")) u_check (
+            .clk_i, .rst_ni, .copy_i(adv_q), .orig_i(adv_o));
         if (II != 1 && II != 3) begin : g_bad_param
             initial begin
                 $display("ERROR %m: csgrt_beat needs II = 1 or 3");

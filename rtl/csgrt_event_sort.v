@@ -466,26 +466,14 @@ module csgrt_event_sort #(
         handover_q <= rst_ni && ((s1_done && s1_last_q) || (full_q && !handover)) &&
                       !(handover || (busy_q && !ray_done_i));
     end
-`ifndef SYNTHESIS
-    // checked from the first reset on (registers start undefined before it)
-    reg reset_seen_q = 1'b0;
-    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
-    always @(posedge clk_i)
-        if (rst_ni && reset_seen_q && handover_q != (full_q && !busy_q)) begin
-            $display("ERROR %m: handover_q differs from full_q && !busy_q");
-            $fatal;
-        end
-`endif
+    csgrt_check_same #(.WHAT("handover_q")) u_check_handover (
+        .clk_i, .rst_ni, .copy_i(handover_q), .orig_i(full_q && !busy_q));
 
-`ifndef SYNTHESIS
-    // the registered tests must equal the count's (a simulation stops if not)
-    always @(posedge clk_i)
-        if (rst_ni && reset_seen_q && (dne_q != (busy_q && dcnt_q != {NB{1'b0}}) ||
-                       (busy_q && dlast_q != (dcnt_q == {{(NB-1){1'b0}}, 1'b1})))) begin
-            $display("ERROR %m: dne_q / dlast_q out of step with the drain count");
-            $fatal;
-        end
-`endif
+    // dlast_q is checked while the drain bank holds a ray (the count is
+    // stale after a release)
+    csgrt_check_same #(.WIDTH(2), .WHAT("dne_q / dlast_q")) u_check_drain (
+        .clk_i, .rst_ni, .copy_i({dne_q, dlast_q}),
+        .orig_i({busy_q && dcnt_q != {NB{1'b0}}, busy_q ? dcnt_q == {{(NB-1){1'b0}}, 1'b1} : dlast_q}));
 
     generate
         if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2 || LOOK_BEHIND < 1 || (INSERTS != 1 && INSERTS != 2)) begin : g_bad_param

@@ -23,52 +23,22 @@ module csgrt_fifo #(
     localparam AW = $clog2(DEPTH);
 
     reg [WIDTH-1:0] mem_q [0:DEPTH-1];
-    reg [AW:0]      wr_q, rd_q;   // one extra bit tells full from empty
+    // pointers, and empty and full as registers (csgrt_fifo_ptrs):
+    // valid_o and ready_o are flip-flops
+    wire [AW-1:0] wr_addr, rd_addr;
+    wire          empty, full;
+    wire          write = valid_i && !full;
+    wire          read  = ready_i && !empty;
+    csgrt_fifo_ptrs #(.AW(AW)) u_ptrs (
+        .clk_i, .rst_ni, .write_i(write), .read_i(read),
+        .wr_addr_o(wr_addr), .rd_addr_o(rd_addr), .empty_o(empty), .full_o(full));
 
-    // Empty and full as registers kept with the pointers (csgrt_fifo_block
-    // says why): valid_o and ready_o are flip-flops.
-    reg  empty_q, full_q;
-    wire write = valid_i && !full_q;
-    wire read  = ready_i && !empty_q;
-    wire [AW:0] wr_inc = wr_q + 1'b1;
-    wire [AW:0] rd_inc = rd_q + 1'b1;
+    assign ready_o = !full;
+    assign valid_o = !empty;
+    assign data_o  = mem_q[rd_addr];
 
-    assign ready_o = !full_q;
-    assign valid_o = !empty_q;
-    assign data_o  = mem_q[rd_q[AW-1:0]];
-
-    always @(posedge clk_i) begin
-        if (!rst_ni) begin
-            wr_q    <= {(AW+1){1'b0}};
-            rd_q    <= {(AW+1){1'b0}};
-            empty_q <= 1'b1;
-            full_q  <= 1'b0;
-        end else begin
-            if (write) begin
-                mem_q[wr_q[AW-1:0]] <= data_i;
-                wr_q <= wr_inc;
-            end
-            if (read) rd_q <= rd_inc;
-            if (write && !read) begin
-                empty_q <= 1'b0;
-                full_q  <= wr_inc[AW-1:0] == rd_q[AW-1:0] && wr_inc[AW] != rd_q[AW];
-            end else if (read && !write) begin
-                empty_q <= rd_inc == wr_q;
-                full_q  <= 1'b0;
-            end
-        end
-    end
-`ifndef SYNTHESIS
-    // checked from the first reset on (registers start undefined before it)
-    reg reset_seen_q = 1'b0;
-    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
     always @(posedge clk_i)
-        if (rst_ni && reset_seen_q && (empty_q != (wr_q == rd_q) ||
-                       full_q != (wr_q[AW-1:0] == rd_q[AW-1:0] && wr_q[AW] != rd_q[AW]))) begin
-            $display("ERROR %m: the empty / full registers are out of step with the pointers");
-            $fatal;
-        end
-`endif
+        if (rst_ni && write) mem_q[wr_addr] <= data_i;
 
     initial begin
         if (DEPTH < 2 || (1 << AW) != DEPTH) begin

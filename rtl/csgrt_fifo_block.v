@@ -55,62 +55,26 @@ module csgrt_fifo_block #(
 
     (* ram_style = "block", no_rw_check *)
     reg [WIDTH-1:0] mem_q [0:DEPTH-1];
-    reg [AW:0]      wr_q, rd_q;   // one extra bit tells full from empty
     reg [WIDTH-1:0] rd_data_q;    // the RAM's read register: the oldest word read
     reg             rd_valid_q;
 
-    // Empty and full as registers kept with the pointers (not compares of
-    // them): ready_o and the read enable start at a flip-flop, and the
-    // producer's decision behind ready_o does not begin with a compare of
-    // two counters (csgrt_raytree's event selection, fanned out to hundreds
-    // of registers, did: tools/logic_depth.py). The next values compare the
-    // pointers one step ahead, in front of the flag registers only.
-    reg  ram_empty_q, ram_full_q;
-    wire write     = valid_i && !ram_full_q;
-    wire rd_free;                 // the read register is free, or its word moves on at this edge
-    wire load      = !ram_empty_q && rd_free;
-    wire [AW:0] wr_inc = wr_q + 1'b1;
-    wire [AW:0] rd_inc = rd_q + 1'b1;
+    // pointers, and empty and full as registers (csgrt_fifo_ptrs): ready_o
+    // and the read enable start at a flip-flop
+    wire [AW-1:0] wr_addr, rd_addr;
+    wire          ram_empty, ram_full;
+    wire          write = valid_i && !ram_full;
+    wire          rd_free;        // the read register is free, or its word moves on at this edge
+    wire          load  = !ram_empty && rd_free;
+    csgrt_fifo_ptrs #(.AW(AW)) u_ptrs (
+        .clk_i, .rst_ni, .write_i(write), .read_i(load),
+        .wr_addr_o(wr_addr), .rd_addr_o(rd_addr), .empty_o(ram_empty), .full_o(ram_full));
 
-    assign ready_o = !ram_full_q;
+    assign ready_o = !ram_full;
 
     always @(posedge clk_i) begin
-        if (write) mem_q[wr_q[AW-1:0]] <= data_i;
-        if (load)  rd_data_q <= mem_q[rd_q[AW-1:0]];
+        if (write) mem_q[wr_addr] <= data_i;
+        if (load)  rd_data_q <= mem_q[rd_addr];
     end
-
-    always @(posedge clk_i) begin
-        if (!rst_ni) begin
-            wr_q        <= {(AW+1){1'b0}};
-            rd_q        <= {(AW+1){1'b0}};
-            ram_empty_q <= 1'b1;
-            ram_full_q  <= 1'b0;
-        end else begin
-            if (write) wr_q <= wr_inc;
-            if (load)  rd_q <= rd_inc;
-            // a write alone: not empty, full if it takes the last entry; a
-            // read alone: not full, empty if it takes the last word
-            if (write && !load) begin
-                ram_empty_q <= 1'b0;
-                ram_full_q  <= wr_inc[AW-1:0] == rd_q[AW-1:0] && wr_inc[AW] != rd_q[AW];
-            end else if (load && !write) begin
-                ram_empty_q <= rd_inc == wr_q;
-                ram_full_q  <= 1'b0;
-            end
-        end
-    end
-`ifndef SYNTHESIS
-    // the flags must equal the pointers' compares (a simulation stops if not)
-    // checked from the first reset on (registers start undefined before it)
-    reg reset_seen_q = 1'b0;
-    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
-    always @(posedge clk_i)
-        if (rst_ni && reset_seen_q && (ram_empty_q != (wr_q == rd_q) ||
-                       ram_full_q != (wr_q[AW-1:0] == rd_q[AW-1:0] && wr_q[AW] != rd_q[AW]))) begin
-            $display("ERROR %m: the empty / full registers are out of step with the pointers");
-            $fatal;
-        end
-`endif
 
     generate
         if (HEAD_REG != 0) begin : g_head_reg

@@ -112,16 +112,7 @@ module csgrt_isect #(
     reg  ready_q;
     always @(posedge clk_i) ready_q <= en_next;
     assign ready_o = ready_q;
-`ifndef SYNTHESIS
-    // checked from the first reset on (registers start undefined before it)
-    reg reset_seen_q = 1'b0;
-    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
-    always @(posedge clk_i)
-        if (rst_ni && reset_seen_q && ready_q != en) begin
-            $display("ERROR %m: ready_q differs from the skid's ready");
-            $fatal;
-        end
-`endif
+    csgrt_check_same #(.WHAT("ready_q")) u_check_ready (.clk_i, .rst_ni, .copy_i(ready_q), .orig_i(en));
 
     // ---- P0: A d and A o ---------------------------------------------------
     // A(i,j) -> coefficient index: diagonal i, (0,1) 3, (0,2) 4, (1,2) 5.

@@ -234,16 +234,7 @@ module csgrt_walker #(
     reg           ctl_ready_q;
     always @(posedge clk_i) ctl_ready_q <= sk_ready_next;
     wire          ce_ctl = ctl_ready_q && !la_stall;   // = ce
-`ifndef SYNTHESIS
-    // checked from the first reset on (registers start undefined before it)
-    reg reset_seen_q = 1'b0;
-    always @(posedge clk_i) if (!rst_ni) reset_seen_q <= 1'b1;
-    always @(posedge clk_i)
-        if (rst_ni && reset_seen_q && ctl_ready_q != sk_ready) begin
-            $display("ERROR %m: ctl_ready_q differs from the output skid's ready");
-            $fatal;
-        end
-`endif
+    csgrt_check_same #(.WHAT("ctl_ready_q")) u_check_ready (.clk_i, .rst_ni, .copy_i(ctl_ready_q), .orig_i(sk_ready));
 
     // ---- issue --------------------------------------------------------------
     // The hit's surface (docs/numerics.md section 5): an event at the same t
