@@ -33,6 +33,13 @@
 // registered stage per height. (Without stage 0 the slot reads and the
 // first node were one clock: 12 LUT levels, the out-of-context critical
 // path of this module and of csgrt_walker, tools/module_timing.py.)
+// Likewise each stage j-1 picks the path's sibling and operator for
+// stage j: the sibling node's next value (the input of its io_q register,
+// chosen by the slot's bits) goes into a register of its own beside io_q,
+// so that stage j is the full table alone. (With the choice among
+// height j-1's 2^(H-j+1) registers in stage j itself, stage 2 was 10 to
+// 11 LUT levels, the longest path of the whole design by
+// tools/logic_depth.py.)
 // Latency: TREE_HEIGHT + 1 clocks (counted in enabled clocks).
 // Throughput: one event per clock.
 // Handshake: none inside; ce_i is a global stage enable (low holds every
@@ -111,6 +118,7 @@ module csgrt_class_tree #(
         end
 
     wire [IW-1:0] io_w [2:2*NS-1];
+    wire [IW-1:0] io_d [2:NS+1];     // node i's next value: the input of its io_q (2 .. NS-1)
     genvar s, i, j, k;
     generate
         if (H == 1) begin : g_op1_root
@@ -130,8 +138,9 @@ module csgrt_class_tree #(
             // element by element: the Verilator model writes each as a
             // variable of its own, without a delayed-assignment flag.)
             reg [IW-1:0] io_q;
+            assign io_d[i] = inout_combine(node_op_i[2*i +: 2], io_w[2*i], io_w[2*i+1]);
             always @(posedge clk_i)
-                if (ce_i) io_q <= inout_combine(node_op_i[2*i +: 2], io_w[2*i], io_w[2*i+1]);
+                if (ce_i) io_q <= io_d[i];
             assign io_w[i] = io_q;
         end
     endgenerate
@@ -156,25 +165,31 @@ module csgrt_class_tree #(
                 assign sib = sib0_q;           // a slot, read in stage 0
                 if (H > 1) begin : g_pos_up
                     wire unused_pos = ^pos[H-j:1];   // only pos[0] (the side) is read here
-                end else begin : g_io_slots
-                    wire unused_io = ^{io_w[2], io_w[3]};   // no node reads the slot values
                 end
             end else begin : g_sib_node
-                // height j-1 as one vector of PW-bit fields, indexed by the
-                // slot's upper bits. PW is IW rounded up to a power of two:
-                // indexing IW-bit fields (IW = 9) made yosys compute the
-                // bit offset pos * IW with adders in front of the
-                // multiplexer (a chain of 4 LUTs on its select, the critical
-                // path of this stage); a power-of-two stride is a plain
-                // multiplexer tree
+                // chosen in stage j-1 from height j-1's next values (io_d)
+                // by the slot's bits above j-1 (stage j-1's slot_w[j-2]),
+                // registered with the same enable as those nodes' io_q: the
+                // sibling's io_q, read a clock early. The field stride is IW
+                // rounded up to a power of two: indexing IW-bit fields
+                // (IW = 9) made yosys compute the bit offset pos * IW with
+                // adders in front of the multiplexer; a power-of-two stride
+                // is a plain multiplexer tree
                 localparam PW = 1 << $clog2(IW);
-                wire [NL*PW-1:0] level;
+                wire [NL*PW-1:0] level_d;
                 for (k = 0; k < NL; k = k + 1) begin : g_level
-                    assign level[k*PW +: PW] = {{(PW-IW){1'b0}}, io_w[NL + k]};
+                    assign level_d[k*PW +: PW] = {{(PW-IW){1'b0}}, io_d[NL + k]};
                 end
                 localparam [H-j:0] SIBLING = 1;        // the sibling's place: pos ^ 1
-                wire [H-j:0] sib_pos = pos ^ SIBLING;
-                assign sib = level[sib_pos*PW +: IW];
+                wire [H-j:0] pos_early = slot_w[j-2][H-1:j-1];
+                wire [H-j:0] sib_pos   = pos_early ^ SIBLING;
+                reg  [IW-1:0] sib_q;
+                always @(posedge clk_i)
+                    if (ce_i) sib_q <= level_d[sib_pos*PW +: IW];
+                assign sib = sib_q;
+                if (j < H) begin : g_pos_up
+                    wire unused_pos = ^pos[H-j:1];   // only pos[0] (the side) is read here
+                end
             end
             wire [CW-1:0] sib_c   = {1'b0, sib[MB], {MB{1'b0}}, sib[MB-1:0]};   // IN m or OUT
             wire          on_right = pos[0];
@@ -184,12 +199,16 @@ module csgrt_class_tree #(
             end else if (j == H) begin : g_root
                 assign op = node_op_i[3:2];
             end else begin : g_inner
-                // the operators of height j as an array, indexed by the slot's bits above j
+                // the operators of height j as an array, indexed by the
+                // slot's bits above j; chosen in stage j-1 (slot_w[j-2])
                 wire [1:0] ops [0:(NS>>j)-1];
                 for (k = 0; k < (NS >> j); k = k + 1) begin : g_op
                     assign ops[k] = node_op_i[2*((NS >> j) + k) +: 2];
                 end
-                assign op = ops[slot_w[j-1][H-1:j]];
+                reg [1:0] op_q;
+                always @(posedge clk_i)
+                    if (ce_i) op_q <= ops[slot_w[j-2][H-1:j]];
+                assign op = op_q;
             end
             wire [CW-1:0] c;
             csgrt_class_node #(.MAT_BITS(MB)) u_node (
@@ -218,8 +237,14 @@ module csgrt_class_tree #(
 
     assign class_o = path_w[H];
 
-    // position 0 of the heap is unused; the slot index's last stage is not read
-    wire unused_cfg = ^{node_op_i[1:0], slot_w[H]};
+    // position 0 of the heap is unused; the slot index's last stage is not
+    // read; heap positions 2 and 3 (the root's children: slots when H = 1,
+    // else nodes whose io_q is read by nobody, their siblings being chosen
+    // from io_d a clock early) and io_d's spare entries NS, NS+1 (so that
+    // the array is not empty when H = 1)
+    wire unused_cfg = ^{node_op_i[1:0], slot_w[H], io_w[2], io_w[3], io_d[NS], io_d[NS+1]};
+    assign io_d[NS]   = {IW{1'b0}};
+    assign io_d[NS+1] = {IW{1'b0}};
 
 endmodule
 
