@@ -283,7 +283,8 @@ module csgrt_event_sort #(
                              lt_b[j-2] ? s1_b_q :
                                          fill_w[j-2];
             end
-            // the drain bank shifts towards cell 0 on a pop
+            // the drain bank shifts towards cell 0 a clock after a pop
+            // (pop_q, below)
             wire [DW-1:0] next_drain;
             if (j == N - 1) begin : g_end
                 assign next_drain = {DW{1'b0}};
@@ -293,7 +294,7 @@ module csgrt_event_sort #(
             always @(posedge clk_i) begin
                 if (s1_adv) fill_q <= ins;
                 if (handover) drain_q <= fill_q;
-                else if (pop) drain_q <= next_drain;
+                else if (pop_q) drain_q <= next_drain;
             end
             assign fill_w[j]  = fill_q;
             assign drain_w[j] = drain_q;
@@ -301,13 +302,45 @@ module csgrt_event_sort #(
     endgenerate
 
     // ---- drain bank ----------------------------------------------------------
+    // The bank's cells shift a clock after the pop that takes their head
+    // (pop_q): their enable is then a function of two registers (pop_q,
+    // handover_q) and not of the walker's pop decision, which reached all
+    // 128 x DW of them (some 4,600 loads, the end of the longest control
+    // path through the walker, tools/logic_depth.py). The ray's events in
+    // order are cells pop_q, pop_q + 1, ...; the head and the next event,
+    // which the walker reads, are registers of their own (head_q,
+    // second_q) loaded from the cells at that offset, so the pop reaches
+    // only them. The walker sees the same values in the same clocks as
+    // with the cells shifting on the pop itself. A pop and a handover never
+    // meet (a pop needs the drain bank busy, a handover needs it free), and
+    // a handover drops a shift still owed to the ray before.
     assign pop = ev_pop_i && dne_q;
+    reg           pop_q;                   // the cells owe one shift
+    reg  [DW-1:0] head_q, second_q;        // the ray's next event and the one after it
+    wire [DW-1:0] after_second;            // the event after second_q: cell pop_q + 2
+    generate
+        if (N >= 4) begin : g_after_second
+            assign after_second = pop_q ? drain_w[3] : drain_w[2];
+        end else begin : g_two_cells   // MAX_LEAVES 1: at most two events
+            assign after_second = {DW{1'b0}};
+        end
+    endgenerate
+    always @(posedge clk_i) begin
+        pop_q <= pop && rst_ni;
+        if (handover) begin
+            head_q   <= fill_w[0];
+            second_q <= fill_w[1];
+        end else if (pop) begin
+            head_q   <= second_q;
+            second_q <= after_second;
+        end
+    end
     assign ray_valid_o   = busy_q;
     assign ray_flags_o   = dflags_q;
     assign ray_payload_o = dpay_q;
     assign ev_valid_o    = dne_q;
     assign ev_last_o     = dlast_q;
-    wire [DW-1:0] head   = drain_w[0];
+    wire [DW-1:0] head   = head_q;
     assign ev_t_o        = {1'b0, head[DW-1 -: UW]};
     wire [LB-1:0] head_tie = head[H+1 +: LB];   // the tie field's leaf bits
     wire          unused_head_tie_top = head[H+1+LB];   // the order's, not the leaf's
@@ -316,7 +349,7 @@ module csgrt_event_sort #(
     assign ev_entering_o = head[0];
     // the head's t against the next cell's: the same-t bit after a pop
     reg  same_t_q;
-    wire [DW-1:0] second = drain_w[1];     // only its t is compared
+    wire [DW-1:0] second = second_q;       // only its t is compared
     wire [DW-UW-1:0] unused_second = second[DW-UW-1:0];
     wire next_same_t = second[DW-1 -: UW] == head[DW-1 -: UW];
     assign ev_same_t_o = same_t_q;
@@ -468,6 +501,14 @@ module csgrt_event_sort #(
     end
     csgrt_check_same #(.WHAT("handover_q")) u_check_handover (
         .clk_i, .rst_ni, .copy_i(handover_q), .orig_i(full_q && !busy_q));
+
+    // the head and the next event equal the cells at the owed shift's
+    // offset while the ray has events left
+    wire [DW-1:0] cell_head   = pop_q ? drain_w[1] : drain_w[0];
+    wire [DW-1:0] cell_second = (pop_q && N > 2) ? drain_w[(N > 2) ? 2 : 1] : drain_w[1];
+    csgrt_check_same #(.WIDTH(2 * DW), .WHAT("head_q / second_q")) u_check_head (
+        .clk_i, .rst_ni, .copy_i(dne_q ? {head_q, second_q} : {2 * DW{1'b0}}),
+        .orig_i(dne_q ? {cell_head, cell_second} : {2 * DW{1'b0}}));
 
     // dlast_q is checked while the drain bank holds a ray (the count is
     // stale after a release)
