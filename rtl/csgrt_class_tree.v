@@ -12,7 +12,12 @@
 //                sits under heap position 2^H + s
 //   slot_used_i  bit s: a leaf sits in slot s; an empty slot is OUT
 // Per event:
-//   flags_i      bit s: slot s is IN (the flags BEFORE this event's toggle)
+//   flags_i      bit s: slot s is IN (the flags BEFORE this event's toggle);
+//   flags_alt_i  the event's flags instead when alt_i is high. (The walker's
+//   alt_i        probe tokens take the flags before their tie group, and
+//                that choice comes late in the walker's clock: made here
+//                after the reads by slot it is one LUT level at their end,
+//                not one in front of a 2^H-to-1 choice.)
 //   slot_i       the event's slot: BORDER 0,m when entering_i, else BORDER m,0
 //   tag_i        TAG_WIDTH bits carried alongside unchanged
 // Output: class_o {kind, from, to} as csgrt_class_node (kind 0 OUT, 1 IN,
@@ -59,6 +64,8 @@ module csgrt_class_tree #(
     // event in
     input  wire                             valid_i,
     input  wire [(1<<TREE_HEIGHT)-1:0]      flags_i,
+    input  wire [(1<<TREE_HEIGHT)-1:0]      flags_alt_i,   // the event's flags when alt_i
+    input  wire                             alt_i,
     input  wire [TREE_HEIGHT-1:0]           slot_i,
     input  wire                             entering_i,
     input  wire [TAG_WIDTH-1:0]             tag_i,
@@ -100,7 +107,8 @@ module csgrt_class_tree #(
     // ---- stage 0: the event's reads by its slot, registered --------------
     wire [H-1:0]  sib_slot = slot_i ^ {{(H-1){1'b0}}, 1'b1};
     wire [MB-1:0] slot_m   = slot_mat_i[slot_i*MB +: MB];
-    wire [IW-1:0] sib_in   = (slot_used_i[sib_slot] && flags_i[sib_slot]) ?
+    wire          sib_flag = alt_i ? flags_alt_i[sib_slot] : flags_i[sib_slot];
+    wire [IW-1:0] sib_in   = (slot_used_i[sib_slot] && sib_flag) ?
                              {1'b1, slot_mat_i[sib_slot*MB +: MB]} : {IW{1'b0}};
     wire [1:0]    op1_in;                  // height 1's operator on the path
     reg  [NS-1:0] flags_q;
@@ -110,7 +118,7 @@ module csgrt_class_tree #(
     reg  [1:0]    op1_q;
     always @(posedge clk_i)
         if (ce_i) begin
-            flags_q <= flags_i;
+            flags_q <= alt_i ? flags_alt_i : flags_i;
             slot0_q <= slot_i;
             path0_q <= entering_i ? {2'd2, {MB{1'b0}}, slot_m} : {2'd2, slot_m, {MB{1'b0}}};
             sib0_q  <= sib_in;

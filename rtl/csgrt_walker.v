@@ -256,8 +256,15 @@ module csgrt_walker #(
     // event's (registered, ev_same_t_i): no comparator on the pop path
     wire          later  = ev_valid_i && gv_q && ev_same_t_i;
     wire          probe  = later && !pr_q;
-    wire [NS-1:0] fl_tok = probe ? gfl_q : fl_cur;   // the flags the token is classified with
-    wire          skip   = !ev_valid_i || (fl_tok[ev_slot_i] == ev_entering_i);
+    // The token is classified with gfl_q (a probe) or fl_cur. probe comes
+    // late (from the sorter's head through the tie-group test), so each
+    // bank is read at the event's slot first and probe chooses between the
+    // bits, here and in the tree (its alt_i): in front of the 2^H-to-1
+    // choices it made the walker's paths into the tree's stage 0 ten LUT
+    // levels long (tools/logic_depth.py).
+    wire          fl_cur_at = seq_q ? fl1_q[ev_slot_i] : fl0_q[ev_slot_i];
+    wire          fl_tok_at = probe ? gfl_q[ev_slot_i] : fl_cur_at;   // the token's flag of the event's slot
+    wire          skip   = !ev_valid_i || (fl_tok_at == ev_entering_i);
     wire          toggle = !skip && !probe;   // the token crosses (flag toggled)
     wire          crossing = issue && !probe && ev_valid_i;   // a walk token of an event
     wire          last   = !probe && (!ev_valid_i || ev_last_i);
@@ -272,7 +279,7 @@ module csgrt_walker #(
     csgrt_class_tree #(.TREE_HEIGHT(H), .MAT_BITS(MB), .TAG_WIDTH(GW)) u_tree (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce),
         .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
-        .valid_i(issue), .flags_i(fl_tok), .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
+        .valid_i(issue), .flags_i(fl_cur), .flags_alt_i(gfl_q), .alt_i(probe), .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
         .valid_o(tv), .class_o(tc), .tag_o(tg));
 
     // ---- flags just before the hit --------------------------------------
@@ -316,7 +323,7 @@ module csgrt_walker #(
             // toggles it (the flag was !entering) or is skipped as invalid
             // (it was entering already), so the bank is written with
             // ev_entering_i and its write needs no read of the flag: the
-            // 128-to-1 choice of fl_tok[ev_slot_i] stays off the bank's loop
+            // 128-to-1 choice of the token's flag stays off the bank's loop
             // (it was the walker's critical path on the FPGA, docs/fpga.md).
             if (crossing) begin
                 if (seq_q) fl1_q[ev_slot_i] <= ev_entering_i;

@@ -6,7 +6,8 @@
 // reshapes), balanced with balance_program() and laid out with layout_tree()
 // on the tree's height; random materials (a small set, so BORDER x,x occurs,
 // and 1..255); then a stream of events with random flags, event leaf and
-// direction, random input gaps and stalls (ce low). Each output must equal
+// direction (on flags_i, or on flags_alt_i with alt_i and junk on the other),
+// random input gaps and stalls (ce low). Each output must equal
 // classify_layout() bit for bit, classify() of the balanced program bit for
 // bit, and classify() of the original program up to BORDER x,x vs IN x (the
 // walk's outcome). Latency must be exactly TREE_HEIGHT + 1 enabled clocks
@@ -76,7 +77,8 @@ Class unpack(uint32_t v) { return {Class::Kind((v >> 16) & 3), uint8_t(v >> 8), 
         void set_slot(int s) { t->h##H##_slot_i = s; }                                       \
         void set_tag(int g) { t->h##H##_tag_i = uint16_t(g); }                               \
         template <class F> void cfg(F f) { f(t->h##H##_node_op_i, t->h##H##_slot_mat_i, t->h##H##_slot_used_i); } \
-        template <class F> void flags(F f) { f(t->h##H##_flags_i); }                          \
+        template <class F> void flags(F f) { f(t->h##H##_flags_i, t->h##H##_flags_alt_i); }  \
+        uint8_t& alt() { return t->h##H##_alt_i; }                                           \
         bool out_valid() { return t->h##H##_valid_o; }                                       \
         uint32_t out_class() { return t->h##H##_class_o; }                                   \
         int out_tag() { return t->h##H##_tag_o; }                                           \
@@ -157,8 +159,17 @@ void run(int configs, int events_per_config, uint64_t seed) {
                 for (auto& f : flags) f = rng() % 2;
                 const int leaf = int(rng() % leaves);
                 const bool ent = rng() % 2;
-                p.flags([&](auto& w) {
-                    for (int s = 0; s < NS; ++s) put(w, s, 1, rng() & 1);   // junk in empty slots
+                // the event's flags on flags_alt_i with alt_i, else on
+                // flags_i; junk on the other and in empty slots
+                const bool alt = rng() % 2;
+                p.alt() = alt;
+                p.flags([&](auto& main, auto& other) {
+                    auto& w = alt ? other : main;
+                    auto& junk = alt ? main : other;
+                    for (int s = 0; s < NS; ++s) {
+                        put(w, s, 1, rng() & 1);
+                        put(junk, s, 1, rng() & 1);
+                    }
                     for (int l = 0; l < leaves; ++l) put(w, lay.leaf_slot[l], 1, flags[l]);
                 });
                 p.set_slot(lay.leaf_slot[leaf]);

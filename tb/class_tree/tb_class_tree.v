@@ -13,6 +13,8 @@
     input  wire [NS-1:0] h``H``_slot_used_i, \
     input  wire h``H``_valid_i, \
     input  wire [NS-1:0] h``H``_flags_i, \
+    input  wire [NS-1:0] h``H``_flags_alt_i, \
+    input  wire h``H``_alt_i, \
     input  wire [H-1:0] h``H``_slot_i, \
     input  wire h``H``_entering_i, \
     input  wire [15:0] h``H``_tag_i, \
@@ -25,7 +27,8 @@
     csgrt_class_tree #(.TREE_HEIGHT(H), .MAT_BITS(8), .TAG_WIDTH(16)) u_h``H ( \
         .clk_i(h``H``_clk_i), .rst_ni(h``H``_rst_ni), .ce_i(h``H``_ce_i), \
         .node_op_i(h``H``_node_op_i), .slot_mat_i(h``H``_slot_mat_i), .slot_used_i(h``H``_slot_used_i), \
-        .valid_i(h``H``_valid_i), .flags_i(h``H``_flags_i), .slot_i(h``H``_slot_i), \
+        .valid_i(h``H``_valid_i), .flags_i(h``H``_flags_i), \
+        .flags_alt_i(h``H``_flags_alt_i), .alt_i(h``H``_alt_i), .slot_i(h``H``_slot_i), \
         .entering_i(h``H``_entering_i), .tag_i(h``H``_tag_i), \
         .valid_o(h``H``_valid_o), .class_o(h``H``_class_o), .tag_o(h``H``_tag_o));
 
