@@ -416,16 +416,30 @@ module csgrt_shade #(
     // =========================================================================
     reg  [KW_L-1:0] k_q;   // light of the next item
     wire            sq_use  = sq_pix[PX_HIT] && (num_lights_i != {NLW{1'b0}});
-    // last item: the last light, or the only item of a miss / a scene without lights
-    wire [NLW:0]    k_x     = {{(NLW+1-KW_L){1'b0}}, k_q};
-    wire [NLW:0]    nl_x    = {1'b0, num_lights_i};
-    wire            sq_last = !sq_use || (k_x + {{NLW{1'b0}}, 1'b1} >= nl_x);
+    // last item: the last light, or the only item of a miss / a scene without lights.
+    // The counter's test k_q + 1 >= num_lights_i is a register of its own
+    // (k_end_q), loaded every clock with the test of k_q's next value: the
+    // test's carry chain lay between k_q and skid A's ready, which enables
+    // its ~300 output registers (tools/logic_depth.py). num_lights_i is
+    // static while items flow; the register follows a change a clock later.
     wire            issue   = adv_b && ska_valid;
+    reg             k_end_q;
+    wire            sq_last = !sq_use || k_end_q;
     assign ska_ready = adv_b && sq_last;
+    wire [KW_L-1:0] k_d     = !rst_ni ? {KW_L{1'b0}} :
+                              !issue  ? k_q :
+                              sq_last ? {KW_L{1'b0}} : k_q + {{(KW_L-1){1'b0}}, 1'b1};
+    wire [NLW:0]    nl_x    = {1'b0, num_lights_i};
+    function automatic k_end(input [KW_L-1:0] k);   // k + 1 >= num_lights_i
+        k_end = {{(NLW+1-KW_L){1'b0}}, k} + {{NLW{1'b0}}, 1'b1} >= nl_x;
+    endfunction
     always @(posedge clk_i) begin
-        if (!rst_ni) k_q <= {KW_L{1'b0}};
-        else if (issue) k_q <= sq_last ? {KW_L{1'b0}} : k_q + {{(KW_L-1){1'b0}}, 1'b1};
+        k_q     <= k_d;
+        k_end_q <= k_end(k_d);
     end
+    // checked while an item waits in skid A (the only time it is read)
+    csgrt_check_same #(.WHAT("k_end_q")) u_check_k_end (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(ska_valid && k_end_q), .orig_i(ska_valid && k_end(k_q)));
 
     // =========================================================================
     // Segment B: per light item
