@@ -77,7 +77,6 @@ module csgrt_camera #(
     wire       en_next, adv_q;
     csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .ce_next_i(en_next), .phase_o(ph),
                                   .last_o(last), .adv_o(adv), .adv_q_o(adv_q));
-    wire unused_adv_q = adv_q;   // no handshake reads the advance here
 
     // ---- generator -----------------------------------------------------------
     reg [3*CW-1:0] dx_q, dy_q;   // component k at k*CW
@@ -90,7 +89,11 @@ module csgrt_camera #(
     reg           busy_q;
 
     wire gen_last = (x_q == wm1_q) && (y_q == hm1_q);
-    wire gen_fire = adv && active_q;
+    // the generator steps on the advance's own register (adv_q, equal to
+    // adv): adv enables every register of the pipeline (~3,300 loads), and
+    // the generator's counters and sums read it again through their own
+    // logic (tools/logic_depth.py)
+    wire gen_fire = adv_q && active_q;
 
     // G: the generator's output register
     reg          g_valid_q, g_last_q;

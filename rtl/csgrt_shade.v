@@ -180,7 +180,6 @@ module csgrt_shade #(
                                     .phase_o(ph_a), .last_o(last_a), .adv_o(adv_a), .adv_q_o(adv_a_q));
     csgrt_beat #(.II(II)) u_beat_b (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .ce_next_i(en_b_next),
                                     .phase_o(ph_b), .last_o(last_b), .adv_o(adv_b), .adv_q_o(adv_b_q));
-    wire unused_adv_b_q = adv_b_q;
     // the upstream handshake reads the advance's own register, not the
     // enable net of every stage of segment A (csgrt_beat)
     assign s_ready_o = adv_a_q;
@@ -422,10 +421,13 @@ module csgrt_shade #(
     // test's carry chain lay between k_q and skid A's ready, which enables
     // its ~300 output registers (tools/logic_depth.py). num_lights_i is
     // static while items flow; the register follows a change a clock later.
-    wire            issue   = adv_b && ska_valid;
+    // issue and skid A's ready read segment B's advance from its own
+    // register (adv_b_q, equal to adv_b), not the net that enables every
+    // register of segments B and C (~7,000 loads)
+    wire            issue   = adv_b_q && ska_valid;
     reg             k_end_q;
     wire            sq_last = !sq_use || k_end_q;
-    assign ska_ready = adv_b && sq_last;
+    assign ska_ready = adv_b_q && sq_last;
     wire [KW_L-1:0] k_d     = !rst_ni ? {KW_L{1'b0}} :
                               !issue  ? k_q :
                               sq_last ? {KW_L{1'b0}} : k_q + {{(KW_L-1){1'b0}}, 1'b1};
