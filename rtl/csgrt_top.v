@@ -140,7 +140,15 @@ module csgrt_top #(
     wire              cam_valid, cam_ready, cam_last, cam_busy, cam_done;
     wire [11:0]       cam_x, cam_y;
     wire [3*BITS-1:0] cam_o, cam_d;
-    wire              start = start_i && loaded_o && (load_error_o == 4'd0) && !busy_o;
+    wire              start = start_i && loaded_o && (load_error_o == 4'd0) && !busy_o;   // the frame is accepted
+    // The units start a clock after the frame is accepted (start_q): the
+    // accept is two LUT levels of the controller's pulse and the loader's
+    // flags, and what the start reaches (the camera's configuration
+    // registers, the ray tree's pixel order, ~700 loads) then hangs on a
+    // flip-flop instead (tools/logic_depth.py). The frame's cycle count
+    // (stat_cycles_o, from the accept) includes that clock.
+    reg               start_q;
+    always @(posedge clk_i) start_q <= start && rst_ni;
     // The tie policy of the frame, taken when it starts: the event sorter's
     // keys (every cell's comparator) then depend on a register, not on an
     // input pin (in Verilator, logic that hangs on an input is evaluated
@@ -154,7 +162,7 @@ module csgrt_top #(
         .clk_i, .rst_ni,
         .origin_i (cam_origin), .base_i (cam_base), .dx_i (cam_dx), .dy_i (cam_dy),
         .width_i (width), .height_i (height),
-        .start_i (start), .busy_o (cam_busy), .done_o (cam_done),
+        .start_i (start_q), .busy_o (cam_busy), .done_o (cam_done),
         .m_valid_o (cam_valid), .m_ready_i (cam_ready),
         .m_x_o (cam_x), .m_y_o (cam_y), .m_o_o (cam_o), .m_d_o (cam_d), .m_last_o (cam_last)
     );
@@ -373,7 +381,7 @@ module csgrt_top #(
     assign group_ready = hit_valid && hit_ready && group_end;
 
     always @(posedge clk_i) begin
-        if (!rst_ni || start)
+        if (!rst_ni || start_q)
             merge_lane_q <= {LW{1'b0}};
         else if (hit_valid && hit_ready)
             merge_lane_q <= group_end ? {LW{1'b0}} : merge_lane_q + 1'b1;
@@ -500,7 +508,7 @@ module csgrt_top #(
                 .REFRACTION(REFRACTION),
                 .DIST_W(DIST_W), .MAT_W(MAT_W), .COL_W(31), .SPEC_W(26), .LUT_FILE(LUT_FILE), .II(SHARE_II)
             ) u_raytree (
-                .clk_i, .rst_ni, .start_i (start),
+                .clk_i, .rst_ni, .start_i (start_q),
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_color_i (light_col),
                 .light_shadowless_i (light_shadowless),
                 .background_i (background), .max_trace_i (max_trace),
