@@ -885,7 +885,13 @@ module csgrt_spawn #(
     wire            issue = adv_c_q && cur_valid_q;
     wire [FLW-1:0]  pick  = pend & (~pend + {{(FLW-1){1'b0}}, 1'b1});   // lowest pending
     wire [FLW-1:0]  rest  = pend & ~pick;
-    wire            last  = (rest == {FLW{1'b0}});
+    // last = (rest == 0): at most one child pending. It is a register of its
+    // own (cur_last_q), loaded with the test of cur_pend_q's next value:
+    // between the pending set and the queues' pops (free -> seq_load, read
+    // by some 250 loads) the test's carry chain and zero test were 8 LUT
+    // levels (tools/logic_depth.py). A simulation stops if the two differ.
+    reg             cur_last_q;
+    wire            last  = cur_last_q;
     wire            free  = !cur_valid_q || (issue && last);
     wire            qo_ready;
     assign seq_load = free && front_valid && qo_ready;
@@ -923,6 +929,19 @@ module csgrt_spawn #(
             wire unused_lights = ^{lpos, light_pos_i, cur_p_q};
         end
     endgenerate
+
+    function automatic at_most_one(input [FLW-1:0] flags);   // of the kinds this build has
+        reg [FLW-1:0] f;
+        begin
+            f = flags & FLAG_MASK;
+            at_most_one = (f & (f - {{(FLW-1){1'b0}}, 1'b1})) == {FLW{1'b0}};
+        end
+    endfunction
+    wire [FLW-1:0] pend_next = seq_load ? qh_flags : issue ? rest : cur_pend_q;
+    always @(posedge clk_i) cur_last_q <= at_most_one(pend_next);
+    csgrt_check_same #(.WHAT("cur_last_q")) u_check_last (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(cur_valid_q && cur_last_q),
+        .orig_i(cur_valid_q && (rest == {FLW{1'b0}})));
 
     always @(posedge clk_i) begin
         if (!rst_ni) cur_valid_q <= 1'b0;
