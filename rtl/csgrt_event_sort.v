@@ -85,9 +85,9 @@
 //
 // ev_same_t_o: the head event's t equals the t of the event popped before
 // it in the same ray (0 for a ray's first event): a register, set with
-// each pop from the two head cells, so the walker's tie-group decision
-// (csgrt_walker's `later`) needs no t comparator on its way to ev_pop_i,
-// which fans out to every drain cell.
+// each pop from the head and the next event (head_q, second_q), so the
+// walker's tie-group decision (csgrt_walker's `later`) needs no t
+// comparator on its way to ev_pop_i.
 //
 // Latency: a leaf result accepted at edge k is in the fill bank after edge
 // k+1; a ray whose last leaf is accepted at edge k is on the drain side
