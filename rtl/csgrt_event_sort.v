@@ -207,7 +207,10 @@ module csgrt_event_sort #(
     reg                     full_q;        // fill bank holds a complete ray
     reg [NS-1:0]            fflags_q;
     reg [PAYLOAD_WIDTH-1:0] fpay_q;
-    wire [DW-1:0]           drain_w [0:N-1];  // sorted, cell 0 is the next event
+    // sorted, cell 0 is the next event; entries N and N+1 are zero (past
+    // the last cell: what the shift brings in, and the head's reads at the
+    // owed shift's offset below)
+    wire [DW-1:0]           drain_w [0:N+1];
     reg [NB-1:0]            dcnt_q;
     reg                     busy_q;        // drain bank holds a ray
     // dcnt_q's two tests as registers of their own, kept with the count:
@@ -285,21 +288,17 @@ module csgrt_event_sort #(
             end
             // the drain bank shifts towards cell 0 a clock after a pop
             // (pop_q, below)
-            wire [DW-1:0] next_drain;
-            if (j == N - 1) begin : g_end
-                assign next_drain = {DW{1'b0}};
-            end else begin : g_shift
-                assign next_drain = drain_w[j+1];
-            end
             always @(posedge clk_i) begin
                 if (s1_adv) fill_q <= ins;
                 if (handover) drain_q <= fill_q;
-                else if (pop_q) drain_q <= next_drain;
+                else if (pop_q) drain_q <= drain_w[j+1];
             end
             assign fill_w[j]  = fill_q;
             assign drain_w[j] = drain_q;
         end
     endgenerate
+    assign drain_w[N]     = {DW{1'b0}};
+    assign drain_w[N + 1] = {DW{1'b0}};
 
     // ---- drain bank ----------------------------------------------------------
     // The bank's cells shift a clock after the pop that takes their head
@@ -317,14 +316,7 @@ module csgrt_event_sort #(
     assign pop = ev_pop_i && dne_q;
     reg           pop_q;                   // the cells owe one shift
     reg  [DW-1:0] head_q, second_q;        // the ray's next event and the one after it
-    wire [DW-1:0] after_second;            // the event after second_q: cell pop_q + 2
-    generate
-        if (N >= 4) begin : g_after_second
-            assign after_second = pop_q ? drain_w[3] : drain_w[2];
-        end else begin : g_two_cells   // MAX_LEAVES 1: at most two events
-            assign after_second = {DW{1'b0}};
-        end
-    endgenerate
+    wire [DW-1:0] after_second = pop_q ? drain_w[3] : drain_w[2];   // the event after second_q
     always @(posedge clk_i) begin
         pop_q <= pop && rst_ni;
         if (handover) begin
@@ -505,7 +497,7 @@ module csgrt_event_sort #(
     // the head and the next event equal the cells at the owed shift's
     // offset while the ray has events left
     wire [DW-1:0] cell_head   = pop_q ? drain_w[1] : drain_w[0];
-    wire [DW-1:0] cell_second = (pop_q && N > 2) ? drain_w[(N > 2) ? 2 : 1] : drain_w[1];
+    wire [DW-1:0] cell_second = pop_q ? drain_w[2] : drain_w[1];
     csgrt_check_same #(.WIDTH(2 * DW), .WHAT("head_q / second_q")) u_check_head (
         .clk_i, .rst_ni, .copy_i(dne_q ? {head_q, second_q} : {2 * DW{1'b0}}),
         .orig_i(dne_q ? {cell_head, cell_second} : {2 * DW{1'b0}}));
