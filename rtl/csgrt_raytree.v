@@ -29,8 +29,9 @@
 // holds at most one pending sibling per level below the current hit plus
 // that hit's two children: at most max_trace_level entries (MAX_DEPTH >= the
 // scene's max_trace_level, which the compiler checks). Every input is taken as it
-// comes except when a ray or request has nowhere to go, which the bounds
-// rule out.
+// comes: a ray or request always has somewhere to go by these bounds
+// (checked in simulation), so the event selection does not look at the
+// FIFOs' full flags.
 //
 // Events, one per clock, in priority order: a contribution (shading done),
 // a spawned child, a traced ray, a stack pop, a new pixel from the camera.
@@ -162,7 +163,8 @@ module csgrt_raytree #(
     localparam PW  = $clog2(MAX_LIGHTS + 1);      // shadow rays pending
     localparam NLW = $clog2(MAX_LIGHTS + 1);
     localparam RAY_FIFO_MIN = CONTEXTS * ((MAX_LIGHTS > 1) ? MAX_LIGHTS : 1);
-    // pushes are registered, one clock after the room they checked: twice the bound
+    // twice the bound: from when the events checked the room a clock before
+    // their registered push; kept, as one block RAM holds either depth
     localparam RAY_FIFO = 2 << $clog2(RAY_FIFO_MIN);
     localparam [15:0] ONE = 16'd4096;
     // csgrt_spawn's child kinds (rtl/csgrt_spawn.v)
@@ -362,25 +364,51 @@ module csgrt_raytree #(
             if (pop_q[k])   begin pop_ctx  = k[CB-1:0]; pop_any  = 1'b1; end
         end
     end
-    // the staged pop: the top entry of context pop_ctx_q's stack, read from the
-    // block RAM the clock before the pop event uses it. A context waiting for
-    // a pop has nothing in flight, so its stack and pointer cannot change
-    // while its entry waits here.
-    reg           pop_staged_q;
-    reg  [CB-1:0] pop_ctx_q;
-    wire          pop_stage = pop_any && !pop_staged_q;
-    reg  [SW-1:0] pop_entry_q;
+    // the staged pop, in two steps: first a waiting context and the address
+    // of its stack's top entry into registers (pa_*), then the block RAM read
+    // at that address into pop_entry_q, the clock before the pop event uses
+    // it. The address is registered because the RAM's ten blocks lie
+    // anywhere on the die: computed in the clock of the read (the waiting
+    // contexts' priority, their stack pointers, the entry index), it was the
+    // ray tree's longest path out of context (13.7 ns, 6.3 of them the route
+    // to a far block). A context waiting for a pop has nothing in flight, so
+    // its stack and pointer cannot change while its address and entry wait
+    // here; one pop is in these two steps at a time.
+    localparam STK_AW = $clog2(P * MAX_DEPTH);
+    reg               pa_valid_q;
+    reg  [CB-1:0]     pa_ctx_q;
+    reg  [STK_AW-1:0] pa_addr_q;
+    reg               pop_staged_q;
+    reg  [CB-1:0]     pop_ctx_q;
+    wire              pa_load   = pop_any && !pa_valid_q && !pop_staged_q;
+    wire              pop_stage = pa_valid_q && !pop_staged_q;
+    reg  [SW-1:0]     pop_entry_q;
     wire [OBW:0] in_flight = next_seq_q - retire_q;
     wire room_out = (in_flight < OB[OBW:0]);
 
-    // One event per clock; every event may push one ray, and the bounds
-    // above guarantee rq_room, which is still checked.
-    wire ev_ct  = ct_valid && rq_room;
-    wire ev_ch  = !ev_ct && ch_valid_i && rq_room;
-    wire ev_hp  = !ev_ct && !ev_ch && hp_valid && rq_room && spq_room;
-    wire ev_pop = !ev_ct && !ev_ch && !ev_hp && pop_staged_q && rq_room;
-    wire ev_cam = !ev_ct && !ev_ch && !ev_hp && !ev_pop && cam_valid_i && free_any && room_out && rq_room
+    // One event per clock; every event may push one ray (and a traced
+    // colour ray one spawn request). The bounds above guarantee room in both
+    // FIFOs, so the selection does not wait for their full flags: it starts
+    // from the sources' valid bits alone, and the room is checked in
+    // simulation (below). (With rq_room and spq_room in it, the ray FIFO's
+    // full flag ran through this decode and its two ~500-load selects into
+    // the pushed record, the longest path of the whole design in
+    // tools/logic_depth.py's model.)
+    wire ev_ct  = ct_valid;
+    wire ev_ch  = !ct_valid && ch_valid_i;
+    wire ev_hp  = !ct_valid && !ch_valid_i && hp_valid;
+    wire ev_pop = !ct_valid && !ch_valid_i && !hp_valid && pop_staged_q;
+    wire ev_cam = !ct_valid && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out
                   && !start_i;
+`ifndef SYNTHESIS
+    // the bounds, checked: a simulation stops if a push finds its FIFO full
+    always @(posedge clk_i)
+        if (rst_ni && ((rq_push && !rq_room) || (spq_push && !spq_room))) begin
+            if (rq_push && !rq_room) $display("ERROR %m: the ray FIFO is full at a push (the header's bound)");
+            else $display("ERROR %m: the spawn request FIFO is full at a push (the header's bound)");
+            $fatal;
+        end
+`endif
     assign ct_ready    = ev_ct;
     assign ch_ready_o  = ev_ch;
     assign hp_ready    = ev_hp;
@@ -461,7 +489,6 @@ module csgrt_raytree #(
 
     // ---- state updates ---------------------------------------------------------------------
     // entry idx of a context's stack
-    localparam STK_AW = $clog2(P * MAX_DEPTH);
     // (32-bit arithmetic, the entry index in its low STK_AW bits: the rest is 0)
     /* verilator lint_off UNUSEDSIGNAL */
     function [STK_AW-1:0] stk(input [CB-1:0] ctx, input [SPW-1:0] idx);
@@ -473,13 +500,14 @@ module csgrt_raytree #(
     endfunction
     /* verilator lint_on UNUSEDSIGNAL */
     always @(posedge clk_i) begin
-        if (pop_stage) pop_entry_q <= stack_q[stk(pop_ctx, sp_q[pop_ctx] - 1'b1)];
+        if (pa_load)   pa_addr_q   <= stk(pop_ctx, sp_q[pop_ctx] - 1'b1);
+        if (pop_stage) pop_entry_q <= stack_q[pa_addr_q];
         if (stw_q) stack_q[stw_addr_q] <= stw_data_q;
     end
 `ifndef SYNTHESIS
     // the argument above, checked: a simulation stops if a pop reads an entry still being written
     always @(posedge clk_i)
-        if (rst_ni && pop_stage && stw_q && stw_addr_q == stk(pop_ctx, sp_q[pop_ctx] - 1'b1)) begin
+        if (rst_ni && pop_stage && stw_q && stw_addr_q == pa_addr_q) begin
             $display("ERROR %m: a stack pop reads an entry whose push is not yet written");
             $fatal;
         end
@@ -499,11 +527,17 @@ module csgrt_raytree #(
             ob_valid_q <= {OB{1'b0}};
             next_seq_q <= {(OBW+1){1'b0}};
             sh_valid_q <= 1'b0;
+            pa_valid_q   <= 1'b0;
             pop_staged_q <= 1'b0;
         end else begin
+            if (pa_load) begin
+                pa_valid_q <= 1'b1;
+                pa_ctx_q   <= pop_ctx;
+            end
             if (pop_stage) begin
+                pa_valid_q   <= 1'b0;
                 pop_staged_q <= 1'b1;
-                pop_ctx_q    <= pop_ctx;
+                pop_ctx_q    <= pa_ctx_q;
             end
             if (start_i) next_seq_q <= retire_q;
             // shading issue
