@@ -258,7 +258,7 @@ module csgrt_raytree #(
 
     // ---- sources -------------------------------------------------------------------------
     // traced rays through csgrt_hit_prep
-    localparam TREC_W = REC_W + 6 * B + 10 * B + MAT_W + NS + RUN_W + NS + 1 + TW + 32;
+    localparam TREC_W = REC_W + 6 * B + 10 * B + MAT_W + NS + RUN_W + NS + 1 + TW + 32 + 2;
     wire               hp_valid;
     wire               hp_ready;
     wire [TREC_W-1:0]  hp_rec;
@@ -274,6 +274,17 @@ module csgrt_raytree #(
     wire [47:0]        tr_atten  = tr_rec_i[1 + CB + KW + 52 +: 48];
     wire [4:0]         tr_cross  = tr_rec_i[1 + CB + KW + 100 +: 5];
     wire [DIST_W-1:0]  tr_tlimit = tr_rec_i[1 + CB + KW + 105 +: DIST_W];
+    // The hit's wishes for a reflected and a transmitted child, decided as
+    // the traced ray goes into csgrt_hit_prep rather than when it comes out:
+    // the depth comparison's carry chain and the material tests were the
+    // front of the ray tree's longest path out of context (the record
+    // queue's head -> want_spawn -> the spawn request and context flags).
+    // (max_trace_i is steady during a frame.)
+    wire [3:0]         tr_depth     = tr_rec_i[1 + CB + KW + 48 +: 4];
+    wire               tr_deeper    = ({4'd0, tr_depth} < max_trace_i);
+    wire               tr_want_refl = (REFLECTION != 0) && tr_deeper && (tr_mat_i[M_REFL +: 16] != 16'd0);
+    // accumulate_fx's `transmits`: the shown material lets light through
+    wire               tr_want_refr = (REFRACTION != 0) && tr_deeper && (tr_mat_i[M_FILTER +: 16] != 16'd0);
     csgrt_hit_prep #(.BITS(B), .MAX_LIGHTS(MAX_LIGHTS), .DIST_W(DIST_W), .REC_W(TREC_W), .II(II)) u_prep (
         .clk_i, .rst_ni, .background_i, .light_color_i,
         .s_valid_i (tr_valid_i), .s_ready_o (tr_ready_o),
@@ -282,7 +293,7 @@ module csgrt_raytree #(
         .s_hit_i (tr_hit_i), .s_t_i (tr_t_i), .s_to_air_i (tr_to_i == 8'd0),
         .s_rgb_i (tr_mat_i[M_RGB +: 48]), .s_filter_i (tr_mat_i[M_FILTER +: 16]),
         .s_reflection_i (tr_mat_i[M_REFL +: 16]),
-        .s_rec_i ({tr_ior_to_i, tr_ior_from_i, tr_t_i, tr_hit_i, tr_flags_after_i, tr_run_i, tr_flags_near_i, tr_mat_i,
+        .s_rec_i ({tr_want_refr, tr_want_refl, tr_ior_to_i, tr_ior_from_i, tr_t_i, tr_hit_i, tr_flags_after_i, tr_run_i, tr_flags_near_i, tr_mat_i,
                    tr_coef_i, tr_o_i, tr_d_i, tr_rec_i}),
         .m_valid_o (hp_valid), .m_ready_i (hp_ready), .m_rec_o (hp_rec),
         .m_p_o (hp_p), .m_in_range_o (hp_in_range), .m_bg_o (hp_bg), .m_w_r_o (hp_w_r), .m_w_t_o (hp_w_t),
@@ -300,6 +311,8 @@ module csgrt_raytree #(
     wire [TW-1:0]     h_t      = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 +: TW];
     wire [15:0]       h_ior_from = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 + TW +: 16];
     wire [15:0]       h_ior_to   = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 + TW + 16 +: 16];
+    wire              want_refl  = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 + TW + 32];
+    wire              want_refr  = hp_rec[REC_W + 16*B + MAT_W + 2*NS + RUN_W + 1 + TW + 33];
     wire              h_shadow = h_rec[0];
     wire [CB-1:0]     h_ctx    = h_rec[1 +: CB];
     wire [KW-1:0]     h_light  = h_rec[1 + CB +: KW];
@@ -394,11 +407,12 @@ module csgrt_raytree #(
     // full flag ran through this decode and its two ~500-load selects into
     // the pushed record, the longest path of the whole design in
     // tools/logic_depth.py's model.)
-    wire ev_ct  = ct_valid;
-    wire ev_ch  = !ct_valid && ch_valid_i;
-    wire ev_hp  = !ct_valid && !ch_valid_i && hp_valid;
-    wire ev_pop = !ct_valid && !ch_valid_i && !hp_valid && pop_staged_q;
-    wire ev_cam = !ct_valid && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out
+    reg  ctp_valid_q;                   // a contribution, summed (below)
+    wire ev_ct  = ctp_valid_q;
+    wire ev_ch  = !ctp_valid_q && ch_valid_i;
+    wire ev_hp  = !ctp_valid_q && !ch_valid_i && hp_valid;
+    wire ev_pop = !ctp_valid_q && !ch_valid_i && !hp_valid && pop_staged_q;
+    wire ev_cam = !ctp_valid_q && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out
                   && !start_i;
 `ifndef SYNTHESIS
     // the bounds, checked: a simulation stops if a push finds its FIFO full
@@ -409,7 +423,7 @@ module csgrt_raytree #(
             $fatal;
         end
 `endif
-    assign ct_ready    = ev_ct;
+    assign ct_ready    = 1'b1;          // the contribution event is never refused (first in priority)
     assign ch_ready_o  = ev_ch;
     assign hp_ready    = ev_hp;
     assign cam_ready_o = ev_cam;
@@ -473,10 +487,7 @@ module csgrt_raytree #(
     endgenerate
 
     // ---- the hit's decisions ---------------------------------------------------------------
-    wire        deeper     = ({4'd0, h_depth} < max_trace_i);
-    wire        want_refl  = (REFLECTION != 0) && deeper && (h_mat[M_REFL +: 16] != 16'd0);
-    // accumulate_fx's `transmits`: the shown material lets light through
-    wire        want_refr  = (REFRACTION != 0) && deeper && (h_mat[M_FILTER +: 16] != 16'd0);
+    // (want_refl and want_refr come with the record: tr_want_* above)
     wire [MAX_LIGHTS-1:0] light_mask;
     genvar g;
     generate
@@ -513,7 +524,45 @@ module csgrt_raytree #(
         end
 `endif
 
-    wire [38:0] acc_ct = add_sat(acc_q[ct_ctx], ct_contrib);
+    // A contribution is summed into its pixel a clock before its event: the
+    // read of the accumulator, the saturating add and the context's output
+    // buffer slot, pixel and pointer test into registers (ctp_*), and the
+    // event writes them. In the clock of the event, the choice between the
+    // contribution's and the traced ray's context in front of the context
+    // memories, the add's carry chain and the output buffer's write were
+    // the ray tree's longest path out of context (11.73 ns). A shaded
+    // context has nothing else in flight (its children are in, its next
+    // colour ray waits for this event), so nothing writes its accumulator,
+    // stack pointer, pixel or slot in between; a simulation check compares
+    // the registers with the event-time values.
+    reg  [CB-1:0]  ctp_ctx_q;
+    reg  [38:0]    ctp_sum_q;
+    reg            ctp_more_q;          // its stack has a pending child
+    reg  [OBW-1:0] ctp_slot_q;
+    reg  [23:0]    ctp_xy_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) ctp_valid_q <= 1'b0;
+        else         ctp_valid_q <= ct_valid;
+        if (ct_valid) begin
+            ctp_ctx_q  <= ct_ctx;
+            ctp_sum_q  <= add_sat(acc_q[ct_ctx], ct_contrib);
+            ctp_more_q <= sp_q[ct_ctx] != {SPW{1'b0}};
+            ctp_slot_q <= seq_q[ct_ctx][OBW-1:0];
+            ctp_xy_q   <= {y_q[ct_ctx], x_q[ct_ctx]};
+        end
+    end
+`ifndef SYNTHESIS
+    reg [38:0] ctp_contrib_q;
+    always @(posedge clk_i) if (ct_valid) ctp_contrib_q <= ct_contrib;
+    always @(posedge clk_i)
+        if (rst_ni && ev_ct && (ctp_sum_q != add_sat(acc_q[ctp_ctx_q], ctp_contrib_q)
+                                || ctp_more_q != (sp_q[ctp_ctx_q] != {SPW{1'b0}})
+                                || ctp_slot_q != seq_q[ctp_ctx_q][OBW-1:0]
+                                || ctp_xy_q != {y_q[ctp_ctx_q], x_q[ctp_ctx_q]})) begin
+            $display("ERROR %m: context %0d changed between its contribution's sum and its event", ctp_ctx_q);
+            $fatal;
+        end
+`endif
     wire [38:0] acc_hp = add_sat(acc_q[h_ctx], hp_bg);
     always @(posedge clk_i) begin
         rq_push  <= 1'b0;
@@ -550,13 +599,13 @@ module csgrt_raytree #(
 
             if (ev_ct) begin
                 // ---- a shaded colour ray's contribution; the ray is done
-                acc_q[ct_ctx] <= acc_ct;
-                if (sp_q[ct_ctx] != {SPW{1'b0}}) pop_q[ct_ctx] <= 1'b1;
+                acc_q[ctp_ctx_q] <= ctp_sum_q;
+                if (ctp_more_q) pop_q[ctp_ctx_q] <= 1'b1;
                 else begin
-                    busy_q[ct_ctx] <= 1'b0;
-                    ob_valid_q[seq_q[ct_ctx][OBW-1:0]] <= 1'b1;
-                    ob_acc_q[seq_q[ct_ctx][OBW-1:0]]   <= acc_ct;
-                    ob_xy_q[seq_q[ct_ctx][OBW-1:0]]    <= {y_q[ct_ctx], x_q[ct_ctx]};
+                    busy_q[ctp_ctx_q]      <= 1'b0;
+                    ob_valid_q[ctp_slot_q] <= 1'b1;
+                    ob_acc_q[ctp_slot_q]   <= ctp_sum_q;
+                    ob_xy_q[ctp_slot_q]    <= ctp_xy_q;
                 end
             end else if (ev_ch) begin
                 // ---- a child of a hit
