@@ -207,14 +207,24 @@ module csgrt_hit_prep #(
     wire [3*WP-1:0] wt_w, at_w;
     wire            x2_valid;
     wire [YW-1:0]   x2_y;
+    // The shadow ray's distance left to its light, subtracted at X1 and
+    // carried through u_at with the word: at X2 its carry chain and zero
+    // test ran into the decision and across the die to x3_term_q (the ray
+    // tree's longest path out of context, 10.52 ns).
+    wire [TW-1:0]     x1_t      = x1_x_q[XO + 101 + KW +: TW];
+    wire [DIST_W-1:0] x1_tlimit = x1_x_q[XO + 101 + KW + TW +: DIST_W];
+    wire [DIST_W:0]   x1_left   = {1'b0, x1_tlimit} - {{(DIST_W+1-TW){1'b0}}, x1_t};
+    wire              x1_left_le0 = x1_left[DIST_W] || (x1_left == {(DIST_W+1){1'b0}});
+    wire [DIST_W-1:0] left;
+    wire              left_le0;
     wire unused_v2, unused_u2;
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .II(II)) u_wt (
         .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(x1_valid_q), .a_i(x1_w), .b_i(x1_ft_q), .user_i(1'b0),
         .valid_o(unused_v2), .p_o(wt_w), .user_o(unused_u2));
-    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(YW), .II(II)) u_at (
+    csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(YW + DIST_W + 1), .II(II)) u_at (
         .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(x1_valid_q), .a_i(x1_atten), .b_i(x1_ft_q),
-        .user_i({x1_bg_q, x1_wr_q, x1_in_range_q, x1_p_q, x1_x_q}),
-        .valid_o(x2_valid), .p_o(at_w), .user_o(x2_y));
+        .user_i({x1_left_le0, x1_left[DIST_W-1:0], x1_bg_q, x1_wr_q, x1_in_range_q, x1_p_q, x1_x_q}),
+        .valid_o(x2_valid), .p_o(at_w), .user_o({left_le0, left, x2_y}));
     wire [XW-1:0]     x2_x        = x2_y[0 +: XW];
     wire              x2_in_range = x2_y[XW + 3*B];
     wire              x2_shadow   = x2_x[0];
@@ -224,9 +234,8 @@ module csgrt_hit_prep #(
     wire [47:0]       x2_atten    = x2_x[XO + 48 +: 48];
     wire [KW-1:0]     x2_light    = x2_x[XO + 96 +: KW];
     wire [4:0]        x2_cross    = x2_x[XO + 96 + KW +: 5];
-    wire [TW-1:0]     x2_t        = x2_x[XO + 101 + KW +: TW];
-    wire [DIST_W-1:0] x2_tlimit   = x2_x[XO + 101 + KW + TW +: DIST_W];
     wire unused_x2 = ^x2_x[4 +: 3*B + 48];   // o and w: used before, output from the record FIFO
+    wire unused_x2t = ^x2_x[XW-1:XO + 101 + KW];   // t and tlimit: subtracted at X1 (left)
 
     // ---- X3: the shadow ray's decision -------------------------------------------
     reg  [47:0] atten_next;
@@ -243,8 +252,6 @@ module csgrt_hit_prep #(
     reg  [KW-1:0]     x3_light_q;
     reg  [YW-1:0]     x3_y_q;
     reg  [47:0]       x3_wt_q;
-    wire [DIST_W:0]   left   = {1'b0, x2_tlimit} - {{(DIST_W+1-TW){1'b0}}, x2_t};
-    wire              left_le0 = left[DIST_W] || (left == {(DIST_W+1){1'b0}});
     reg               ends;
     reg  [47:0]       term;
     always @* begin
@@ -272,7 +279,7 @@ module csgrt_hit_prep #(
             x3_ends_q   <= ends || !x2_shadow;
             x3_term_q   <= term;
             x3_atten_q  <= atten_next;
-            x3_tlimit_q <= left[DIST_W-1:0];
+            x3_tlimit_q <= left;
             x3_light_q  <= x2_light;
             x3_y_q      <= x2_y;
             x3_wt_q     <= wt_sat;
