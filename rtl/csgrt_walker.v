@@ -283,20 +283,60 @@ module csgrt_walker #(
         .valid_o(tv), .class_o(tc), .tag_o(tg));
 
     // ---- flags just before the hit --------------------------------------
-    reg [NS-1:0] undo;
-    reg          busy_other;
+    // The flags before the output token's crossing: its bank without the
+    // crossings of the tokens still in the tree (the output token's own
+    // among them). Both halves are registers: a lagging copy of the banks
+    // (lag0_q, lag1_q) that takes each crossing a clock after the bank, from
+    // the shadow's newest entry, so it holds every crossing but that of the
+    // token at shadow index 0; and undo_q, the crossings of the tokens that
+    // will be at indices 1 .. TL-1 after the next enable (now at 0 .. TL-2)
+    // of the bank of the next output token (now at TL-2). Computed at the
+    // output from the live bank and the whole shadow, this path (the tree's
+    // output seq -> the shadow's compares and slot decodes -> the XOR of
+    // TL terms -> the record -> the output skid) was 10 LUT levels
+    // (tools/logic_depth.py). A simulation check compares the two.
+    reg  [NS-1:0] lag0_q, lag1_q, undo_q;
+    reg  [NS-1:0] undo_d;
+    reg           busy_other;
     integer k;
     always @* begin
-        undo = {NS{1'b0}};
+        undo_d = {NS{1'b0}};
         busy_other = 1'b0;
         for (k = 0; k < TL; k = k + 1) begin
-            if (sh_valid_q[k] && !sh_skip_q[k] && sh_seq_q[k] == t_seq)
-                undo = undo ^ ({{(NS-1){1'b0}}, 1'b1} << sh_slot_q[k*H +: H]);
+            if (k < TL - 1 && sh_valid_q[k] && !sh_skip_q[k] && sh_seq_q[k] == sh_seq_q[TL-2])
+                undo_d = undo_d ^ ({{(NS-1){1'b0}}, 1'b1} << sh_slot_q[k*H +: H]);
             if (sh_valid_q[k] && sh_seq_q[k] != seq_q) busy_other = 1'b1;
         end
     end
     assign in_fl_next = busy_other;
-    wire [NS-1:0] flags_before = (t_seq ? fl1_q : fl0_q) ^ undo;
+    wire [NS-1:0] sh0_toggle = {{(NS-1){1'b0}}, sh_valid_q[0] && !sh_skip_q[0]} << sh_slot_q[0 +: H];
+    always @(posedge clk_i)
+        if (ce) begin
+            undo_q <= undo_d;
+            if (sh_seq_q[0]) lag1_q <= lag1_q ^ sh0_toggle;
+            else             lag0_q <= lag0_q ^ sh0_toggle;
+            // a load fills the bank with no token in flight (in_fl_next), lagging copy too
+            if (load) begin
+                if (seq_q) lag0_q <= ray_flags_i;
+                else       lag1_q <= ray_flags_i;
+            end
+        end
+    wire [NS-1:0] flags_before = (t_seq ? lag1_q : lag0_q) ^ undo_q;
+`ifndef SYNTHESIS
+    // the same flags from the live bank and the whole shadow
+    reg [NS-1:0] undo_chk;
+    always @* begin
+        undo_chk = {NS{1'b0}};
+        for (k = 0; k < TL; k = k + 1)
+            if (sh_valid_q[k] && !sh_skip_q[k] && sh_seq_q[k] == t_seq)
+                undo_chk = undo_chk ^ ({{(NS-1){1'b0}}, 1'b1} << sh_slot_q[k*H +: H]);
+    end
+    always @(posedge clk_i)
+        if (rst_ni && tv && flags_before != ((t_seq ? fl1_q : fl0_q) ^ undo_chk)) begin
+            $display("ERROR %m: the registered flags before the hit differ from the live bank's");
+            $fatal;
+        end
+`endif
     // the near side starts before the hit's tie group: the flags before the
     // group's first token, kept as it passes (probes change no flag)
     reg  [NS-1:0] gs_flags_q;
