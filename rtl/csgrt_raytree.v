@@ -396,8 +396,11 @@ module csgrt_raytree #(
     wire              pa_load   = pop_any && !pa_valid_q && !pop_staged_q;
     wire              pop_stage = pa_valid_q && !pop_staged_q;
     reg  [SW-1:0]     pop_entry_q;
-    wire [OBW:0] in_flight = next_seq_q - retire_q;
-    wire room_out = (in_flight < OB[OBW:0]);
+    // room in the output buffer for a new pixel, as a register loaded with
+    // the test of the two counters' next values (room_out_q, below): the
+    // subtraction and compare of the counters themselves ran into the
+    // camera's event and the pushed record (12.02 ns out of context)
+    reg          room_out_q;
 
     // One event per clock; every event may push one ray (and a traced
     // colour ray one spawn request). The bounds above guarantee room in both
@@ -412,7 +415,7 @@ module csgrt_raytree #(
     wire ev_ch  = !ctp_valid_q && ch_valid_i;
     wire ev_hp  = !ctp_valid_q && !ch_valid_i && hp_valid;
     wire ev_pop = !ctp_valid_q && !ch_valid_i && !hp_valid && pop_staged_q;
-    wire ev_cam = !ctp_valid_q && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out
+    wire ev_cam = !ctp_valid_q && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out_q
                   && !start_i;
 `ifndef SYNTHESIS
     // the bounds, checked: a simulation stops if a push finds its FIFO full
@@ -719,6 +722,17 @@ module csgrt_raytree #(
             if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
         end
     end
+    // the next values of next_seq_q (above) and retire_q (below)
+    wire [OBW:0] next_seq_d = start_i ? retire_q : ev_cam ? next_seq_q + 1'b1 : next_seq_q;
+    wire [OBW:0] retire_d   = out_take ? retire_q + 1'b1 : retire_q;
+    wire [OBW:0] in_flight_d = next_seq_d - retire_d;
+    always @(posedge clk_i)
+        room_out_q <= !rst_ni || (in_flight_d < OB[OBW:0]);
+`ifndef SYNTHESIS
+    wire [OBW:0] in_flight = next_seq_q - retire_q;
+    csgrt_check_same #(.WHAT("room_out_q")) u_check_room (
+        .clk_i, .rst_ni, .copy_i(room_out_q), .orig_i(in_flight < OB[OBW:0]));
+`endif
 
     // ---- pixels out, in raster order --------------------------------------------------------
     wire [38:0] ob_head  = ob_acc_q[retire_q[OBW-1:0]];
