@@ -220,7 +220,7 @@ module csgrt_raytree #(
     // the stack: {run, flags, depth, w, d, o}. P * MAX_DEPTH entries of some
     // 360 bits at 24 bits: block RAM (LUT RAM took ~360 DPR16X4 and a 4:1 read
     // multiplexer per bit). Its read is registered, so a pop is staged
-    // (pop_entry_q below). A context's stack is written only while it waits
+    // (pop_ram_q, pop_entry_q below). A context's stack is written only while it waits
     // for children and read only while it waits for a pop, never both, so a
     // read never meets a write at the same address (no_rw_check).
     // A push is written a clock late, from registers (stw_*): the write port
@@ -377,25 +377,31 @@ module csgrt_raytree #(
             if (pop_q[k])   begin pop_ctx  = k[CB-1:0]; pop_any  = 1'b1; end
         end
     end
-    // the staged pop, in two steps: first a waiting context and the address
-    // of its stack's top entry into registers (pa_*), then the block RAM read
-    // at that address into pop_entry_q, the clock before the pop event uses
-    // it. The address is registered because the RAM's ten blocks lie
-    // anywhere on the die: computed in the clock of the read (the waiting
-    // contexts' priority, their stack pointers, the entry index), it was the
-    // ray tree's longest path out of context (13.7 ns, 6.3 of them the route
-    // to a far block). A context waiting for a pop has nothing in flight, so
+    // the staged pop, in three steps: first a waiting context and the
+    // address of its stack's top entry into registers (pa_*), then the block
+    // RAM read at that address (its read register, pop_ram_q), then a fabric
+    // register (pop_entry_q) the clock before the pop event uses it. The
+    // RAM's ten blocks lie anywhere on the die: the address computed in the
+    // clock of the read (the waiting contexts' priority, their stack
+    // pointers, the entry index) was the ray tree's longest path out of
+    // context (13.7 ns, 6.3 of them the route to a far block), and the
+    // RAM's slow read port (5.8 ns) straight into the pushed record the
+    // next (10.7 ns). A context waiting for a pop has nothing in flight, so
     // its stack and pointer cannot change while its address and entry wait
-    // here; one pop is in these two steps at a time.
+    // here; one pop is in these steps at a time.
     localparam STK_AW = $clog2(P * MAX_DEPTH);
     reg               pa_valid_q;
     reg  [CB-1:0]     pa_ctx_q;
     reg  [STK_AW-1:0] pa_addr_q;
+    reg               pr_valid_q;          // pop_ram_q holds the entry
+    reg  [CB-1:0]     pr_ctx_q;
     reg               pop_staged_q;
     reg  [CB-1:0]     pop_ctx_q;
-    wire              pa_load   = pop_any && !pa_valid_q && !pop_staged_q;
-    wire              pop_stage = pa_valid_q && !pop_staged_q;
-    reg  [SW-1:0]     pop_entry_q;
+    wire              pop_idle  = !pa_valid_q && !pr_valid_q && !pop_staged_q;
+    wire              pa_load   = pop_any && pop_idle;
+    wire              pop_stage = pa_valid_q;
+    wire              pop_fab   = pr_valid_q;
+    reg  [SW-1:0]     pop_ram_q, pop_entry_q;
     // room in the output buffer for a new pixel, as a register loaded with
     // the test of the two counters' next values (room_out_q, below): the
     // subtraction and compare of the counters themselves ran into the
@@ -515,7 +521,8 @@ module csgrt_raytree #(
     /* verilator lint_on UNUSEDSIGNAL */
     always @(posedge clk_i) begin
         if (pa_load)   pa_addr_q   <= stk(pop_ctx, sp_q[pop_ctx] - 1'b1);
-        if (pop_stage) pop_entry_q <= stack_q[pa_addr_q];
+        if (pop_stage) pop_ram_q   <= stack_q[pa_addr_q];
+        if (pop_fab)   pop_entry_q <= pop_ram_q;
         if (stw_q) stack_q[stw_addr_q] <= stw_data_q;
     end
 `ifndef SYNTHESIS
@@ -580,6 +587,7 @@ module csgrt_raytree #(
             next_seq_q <= {(OBW+1){1'b0}};
             sh_valid_q <= 1'b0;
             pa_valid_q   <= 1'b0;
+            pr_valid_q   <= 1'b0;
             pop_staged_q <= 1'b0;
         end else begin
             if (pa_load) begin
@@ -587,9 +595,14 @@ module csgrt_raytree #(
                 pa_ctx_q   <= pop_ctx;
             end
             if (pop_stage) begin
-                pa_valid_q   <= 1'b0;
+                pa_valid_q <= 1'b0;
+                pr_valid_q <= 1'b1;
+                pr_ctx_q   <= pa_ctx_q;
+            end
+            if (pop_fab) begin
+                pr_valid_q   <= 1'b0;
                 pop_staged_q <= 1'b1;
-                pop_ctx_q    <= pa_ctx_q;
+                pop_ctx_q    <= pr_ctx_q;
             end
             if (start_i) next_seq_q <= retire_q;
             // shading issue
