@@ -628,11 +628,7 @@ module csgrt_raytree #(
                 case (ch_kind_i)
                     K_SHADOW: begin
                         if (ch_lit_i) begin
-                            rq_push <= 1'b1;
-                            rq_rec  <= rec(1'b1, ch_user_i, ch_light_i, 48'd0, 4'd0, {3{ONE}}, 5'd0, ch_dist_i);
-                            rq_o    <= ch_p_i;
-                            rq_d    <= ch_d_i;
-                            rq_info <= info(1'b1, near_q[ch_user_i], ch_dist_i, run_q[ch_user_i]);
+                            rq_push <= 1'b1;   // the record: rq_* below
                             pend_q[ch_user_i] <= pend_q[ch_user_i] + 1'b1;
                         end else begin
                             lcol_q[{ch_user_i, ch_light_i}] <= 48'd0;
@@ -697,22 +693,12 @@ module csgrt_raytree #(
                         if (pend_q[h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[h_ctx])
                             shade_q[h_ctx] <= 1'b1;
                     end else begin
-                        rq_push <= 1'b1;
-                        rq_rec  <= rec(1'b1, h_ctx, h_light, 48'd0, 4'd0, hp_sh_atten, h_cross + 5'd1, hp_sh_tlimit);
-                        rq_o    <= hp_p;
-                        rq_d    <= h_d;
-                        rq_info <= info(1'b1, h_after, hp_sh_tlimit, {RUN_W{1'b0}});
+                        rq_push <= 1'b1;   // the shadow ray goes on: rq_* below
                     end
                 end
             end else if (ev_pop) begin
                 // ---- the next colour ray of a context, from its stack
-                rq_push <= 1'b1;
-                rq_rec  <= rec(1'b0, pop_ctx_q, {KW{1'b0}}, pop_entry_q[6*B +: 48], pop_entry_q[6*B + 48 +: 4],
-                               48'd0, 5'd0, {DIST_W{1'b0}});
-                rq_o    <= pop_entry_q[0 +: 3*B];
-                rq_d    <= pop_entry_q[3*B +: 3*B];
-                rq_info <= info(1'b1, pop_entry_q[6*B + 52 +: NS], {DIST_W{1'b0}},
-                                pop_entry_q[6*B + 52 + NS +: RUN_W]);
+                rq_push <= 1'b1;   // the popped ray: rq_* below
                 sp_q[pop_ctx_q]  <= sp_q[pop_ctx_q] - 1'b1;
                 pop_q[pop_ctx_q] <= 1'b0;
                 pop_staged_q     <= 1'b0;
@@ -725,11 +711,7 @@ module csgrt_raytree #(
                 acc_q[free_ctx]  <= 39'd0;
                 sp_q[free_ctx]   <= {SPW{1'b0}};
                 next_seq_q       <= next_seq_q + 1'b1;
-                rq_push <= 1'b1;
-                rq_rec  <= rec(1'b0, free_ctx, {KW{1'b0}}, {3{ONE}}, 4'd1, 48'd0, 5'd0, {DIST_W{1'b0}});
-                rq_o    <= cam_o_i;
-                rq_d    <= cam_d_i;
-                rq_info <= info(1'b0, {NS{1'b0}}, {DIST_W{1'b0}}, {RUN_W{1'b0}});
+                rq_push <= 1'b1;   // the primary ray: rq_* below
             end
             // output buffer retire
             if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
@@ -746,6 +728,45 @@ module csgrt_raytree #(
     csgrt_check_same #(.WHAT("room_out_q")) u_check_room (
         .clk_i, .rst_ni, .copy_i(room_out_q), .orig_i(in_flight < OB[OBW:0]));
 `endif
+
+    // The pushed ray's record, loaded every clock from the source the event
+    // selection would take if it pushes: the sources in the events' order
+    // of priority, by their valid bits alone. Whether a ray is pushed at
+    // all (rq_push, above) needs the whole decision (the contribution event
+    // first, a child's kind and light, a shadow ray's end); the record does
+    // not, since the FIFO ignores it without a push. With the decision in
+    // front of them, these ~1,000 registers hung on two ~460-load nets of
+    // the event decode (tools/logic_depth.py: 18.57 ns, the whole design's
+    // longest path).
+    always @(posedge clk_i) begin
+        if (ch_valid_i) begin
+            // a shadow ray to a light, from the hit's near side
+            rq_rec  <= rec(1'b1, ch_user_i, ch_light_i, 48'd0, 4'd0, {3{ONE}}, 5'd0, ch_dist_i);
+            rq_o    <= ch_p_i;
+            rq_d    <= ch_d_i;
+            rq_info <= info(1'b1, near_q[ch_user_i], ch_dist_i, run_q[ch_user_i]);
+        end else if (hp_valid) begin
+            // a shadow ray through a transparent surface, on the far side
+            rq_rec  <= rec(1'b1, h_ctx, h_light, 48'd0, 4'd0, hp_sh_atten, h_cross + 5'd1, hp_sh_tlimit);
+            rq_o    <= hp_p;
+            rq_d    <= h_d;
+            rq_info <= info(1'b1, h_after, hp_sh_tlimit, {RUN_W{1'b0}});
+        end else if (pop_staged_q) begin
+            // the next colour ray of a context, from its stack
+            rq_rec  <= rec(1'b0, pop_ctx_q, {KW{1'b0}}, pop_entry_q[6*B +: 48], pop_entry_q[6*B + 48 +: 4],
+                           48'd0, 5'd0, {DIST_W{1'b0}});
+            rq_o    <= pop_entry_q[0 +: 3*B];
+            rq_d    <= pop_entry_q[3*B +: 3*B];
+            rq_info <= info(1'b1, pop_entry_q[6*B + 52 +: NS], {DIST_W{1'b0}},
+                            pop_entry_q[6*B + 52 + NS +: RUN_W]);
+        end else begin
+            // a primary ray
+            rq_rec  <= rec(1'b0, free_ctx, {KW{1'b0}}, {3{ONE}}, 4'd1, 48'd0, 5'd0, {DIST_W{1'b0}});
+            rq_o    <= cam_o_i;
+            rq_d    <= cam_d_i;
+            rq_info <= info(1'b0, {NS{1'b0}}, {DIST_W{1'b0}}, {RUN_W{1'b0}});
+        end
+    end
 
     // ---- pixels out, in raster order --------------------------------------------------------
     wire [38:0] ob_head  = ob_acc_q[retire_q[OBW-1:0]];
