@@ -424,9 +424,13 @@ module csgrt_raytree #(
     wire ev_cam = !ctp_valid_q && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out_q
                   && !start_i;
 `ifndef SYNTHESIS
+    // the simulation checks of this module start at the first reset (the
+    // registers hold their power-up values before it)
+    reg chk_reset_seen_q = 1'b0;
+    always @(posedge clk_i) if (!rst_ni) chk_reset_seen_q <= 1'b1;
     // the bounds, checked: a simulation stops if a push finds its FIFO full
     always @(posedge clk_i)
-        if (rst_ni && ((rq_push && !rq_room) || (spq_push && !spq_room))) begin
+        if (rst_ni && chk_reset_seen_q && ((rq_push && !rq_room) || (spq_push && !spq_room))) begin
             if (rq_push && !rq_room) $display("ERROR %m: the ray FIFO is full at a push (the header's bound)");
             else $display("ERROR %m: the spawn request FIFO is full at a push (the header's bound)");
             $fatal;
@@ -528,7 +532,7 @@ module csgrt_raytree #(
 `ifndef SYNTHESIS
     // the argument above, checked: a simulation stops if a pop reads an entry still being written
     always @(posedge clk_i)
-        if (rst_ni && pop_stage && stw_q && stw_addr_q == pa_addr_q) begin
+        if (rst_ni && chk_reset_seen_q && pop_stage && stw_q && stw_addr_q == pa_addr_q) begin
             $display("ERROR %m: a stack pop reads an entry whose push is not yet written");
             $fatal;
         end
@@ -565,7 +569,7 @@ module csgrt_raytree #(
     reg [38:0] ctp_contrib_q;
     always @(posedge clk_i) if (ct_valid) ctp_contrib_q <= ct_contrib;
     always @(posedge clk_i)
-        if (rst_ni && ev_ct && (ctp_sum_q != add_sat(acc_q[ctp_ctx_q], ctp_contrib_q)
+        if (rst_ni && chk_reset_seen_q && ev_ct && (ctp_sum_q != add_sat(acc_q[ctp_ctx_q], ctp_contrib_q)
                                 || ctp_more_q != (sp_q[ctp_ctx_q] != {SPW{1'b0}})
                                 || ctp_slot_q != seq_q[ctp_ctx_q][OBW-1:0]
                                 || ctp_xy_q != {y_q[ctp_ctx_q], x_q[ctp_ctx_q]})) begin

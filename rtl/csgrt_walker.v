@@ -331,11 +331,10 @@ module csgrt_walker #(
             if (sh_valid_q[k] && !sh_skip_q[k] && sh_seq_q[k] == t_seq)
                 undo_chk = undo_chk ^ ({{(NS-1){1'b0}}, 1'b1} << sh_slot_q[k*H +: H]);
     end
-    always @(posedge clk_i)
-        if (rst_ni && tv && flags_before != ((t_seq ? fl1_q : fl0_q) ^ undo_chk)) begin
-            $display("ERROR %m: the registered flags before the hit differ from the live bank's");
-            $fatal;
-        end
+    // (from the first reset on, as the state starts undefined before it)
+    csgrt_check_same #(.WIDTH(NS), .WHAT("flags_before (the lagging banks and undo_q)")) u_check_before (
+        .clk_i, .rst_ni, .copy_i(tv ? flags_before : {NS{1'b0}}),
+        .orig_i(tv ? (t_seq ? fl1_q : fl0_q) ^ undo_chk : {NS{1'b0}}));
 `endif
     // the near side starts before the hit's tie group: the flags before the
     // group's first token, kept as it passes (probes change no flag)
