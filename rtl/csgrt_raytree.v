@@ -388,13 +388,12 @@ module csgrt_raytree #(
     // RAM's slow read port (5.8 ns) straight into the pushed record the
     // next (10.7 ns). A context waiting for a pop has nothing in flight, so
     // its stack and pointer cannot change while its address and entry wait
-    // here; one pop is in these steps at a time.
+    // here; one pop is in these steps at a time, so its context is one
+    // register (pop_ctx_q) from the first step to the event.
     localparam STK_AW = $clog2(P * MAX_DEPTH);
     reg               pa_valid_q;
-    reg  [CB-1:0]     pa_ctx_q;
     reg  [STK_AW-1:0] pa_addr_q;
     reg               pr_valid_q;          // pop_ram_q holds the entry
-    reg  [CB-1:0]     pr_ctx_q;
     reg               pop_staged_q;
     reg  [CB-1:0]     pop_ctx_q;
     wire              pop_idle  = !pa_valid_q && !pr_valid_q && !pop_staged_q;
@@ -423,6 +422,12 @@ module csgrt_raytree #(
     wire ev_pop = !ctp_valid_q && !ch_valid_i && !hp_valid && pop_staged_q;
     wire ev_cam = !ctp_valid_q && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out_q
                   && !start_i;
+    // the output buffer's counters' next values: the pixel sequence
+    // restarts at a frame's start and steps with a new pixel; the retire
+    // pointer steps with a pixel out (both registers load these; room_out_q
+    // tests them)
+    wire [OBW:0] next_seq_d = start_i ? retire_q : ev_cam ? next_seq_q + 1'b1 : next_seq_q;
+    wire [OBW:0] retire_d   = out_take ? retire_q + 1'b1 : retire_q;
 `ifndef SYNTHESIS
     // the simulation checks of this module start at the first reset (the
     // registers hold their power-up values before it)
@@ -568,14 +573,11 @@ module csgrt_raytree #(
 `ifndef SYNTHESIS
     reg [38:0] ctp_contrib_q;
     always @(posedge clk_i) if (ct_valid) ctp_contrib_q <= ct_contrib;
-    always @(posedge clk_i)
-        if (rst_ni && chk_reset_seen_q && ev_ct && (ctp_sum_q != add_sat(acc_q[ctp_ctx_q], ctp_contrib_q)
-                                || ctp_more_q != (sp_q[ctp_ctx_q] != {SPW{1'b0}})
-                                || ctp_slot_q != seq_q[ctp_ctx_q][OBW-1:0]
-                                || ctp_xy_q != {y_q[ctp_ctx_q], x_q[ctp_ctx_q]})) begin
-            $display("ERROR %m: context %0d changed between its contribution's sum and its event", ctp_ctx_q);
-            $fatal;
-        end
+    csgrt_check_same #(.WIDTH(39 + 1 + OBW + 24), .WHAT("the contribution's early sum, slot, pixel and stack test")) u_check_ctp (
+        .clk_i, .rst_ni,
+        .copy_i(ev_ct ? {ctp_sum_q, ctp_more_q, ctp_slot_q, ctp_xy_q} : {(39 + 1 + OBW + 24){1'b0}}),
+        .orig_i(ev_ct ? {add_sat(acc_q[ctp_ctx_q], ctp_contrib_q), sp_q[ctp_ctx_q] != {SPW{1'b0}},
+                         seq_q[ctp_ctx_q][OBW-1:0], y_q[ctp_ctx_q], x_q[ctp_ctx_q]} : {(39 + 1 + OBW + 24){1'b0}}));
 `endif
     wire [38:0] acc_hp = add_sat(acc_q[h_ctx], hp_bg);
     always @(posedge clk_i) begin
@@ -596,19 +598,17 @@ module csgrt_raytree #(
         end else begin
             if (pa_load) begin
                 pa_valid_q <= 1'b1;
-                pa_ctx_q   <= pop_ctx;
+                pop_ctx_q  <= pop_ctx;
             end
             if (pop_stage) begin
                 pa_valid_q <= 1'b0;
                 pr_valid_q <= 1'b1;
-                pr_ctx_q   <= pa_ctx_q;
             end
             if (pop_fab) begin
                 pr_valid_q   <= 1'b0;
                 pop_staged_q <= 1'b1;
-                pop_ctx_q    <= pr_ctx_q;
             end
-            if (start_i) next_seq_q <= retire_q;
+            next_seq_q <= next_seq_d;
             // shading issue
             if (sh_ready_i && sh_valid_q) sh_valid_q <= 1'b0;
             if (sh_issue) begin
@@ -714,16 +714,12 @@ module csgrt_raytree #(
                 seq_q[free_ctx]  <= next_seq_q;
                 acc_q[free_ctx]  <= 39'd0;
                 sp_q[free_ctx]   <= {SPW{1'b0}};
-                next_seq_q       <= next_seq_q + 1'b1;
                 rq_push <= 1'b1;   // the primary ray: rq_* below
             end
             // output buffer retire
             if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
         end
     end
-    // the next values of next_seq_q (above) and retire_q (below)
-    wire [OBW:0] next_seq_d = start_i ? retire_q : ev_cam ? next_seq_q + 1'b1 : next_seq_q;
-    wire [OBW:0] retire_d   = out_take ? retire_q + 1'b1 : retire_q;
     wire [OBW:0] in_flight_d = next_seq_d - retire_d;
     always @(posedge clk_i)
         room_out_q <= !rst_ni || (in_flight_d < OB[OBW:0]);
@@ -788,10 +784,8 @@ module csgrt_raytree #(
             retire_q  <= {(OBW+1){1'b0}};
         end else if (o_adv) begin
             o_valid_q <= out_take;
-            if (out_take) begin
-                o_xy_q   <= ob_xy_q[retire_q[OBW-1:0]];
-                retire_q <= retire_q + 1'b1;
-            end
+            if (out_take) o_xy_q <= ob_xy_q[retire_q[OBW-1:0]];
+            retire_q <= retire_d;
         end
     end
     assign pix_valid_o = o_valid_q;
