@@ -19,7 +19,10 @@
 // that net into the next module (tools/logic_depth.py). The register is
 // loaded with adv_o's next value, from ce_next_i (the enable's value after
 // the next rising edge: csgrt_skid's ready_next_o); a simulation stops if
-// the two ever differ.
+// it ever differs from ce_i && last_o. With II = 3 adv_o is a register
+// too, a second one loaded the same way (so that the handshake's reads
+// stay off the pipeline's enable net); with II = 1 adv_o is ce_i, itself a
+// register (the skid's ready).
 module csgrt_beat #(
     parameter II = 1   // running clocks per beat: 1 or 3
 ) (
@@ -50,15 +53,25 @@ module csgrt_beat #(
             end
             assign phase_o = phase_q;
             assign last_o  = (phase_q == 2'd2);
-            assign adv_o   = ce_i && last_o;
-            // the phase after the edge is 2: a reset makes it 0, a running
-            // clock moves 1 to 2, a stalled one keeps 2
-            always @(posedge clk_i)
-                adv_q <= ce_next_i && rst_ni && (ce_i ? phase_q == 2'd1 : phase_q == 2'd2);
+            // adv's next value: the phase after the edge is 2 (a reset makes
+            // it 0, a running clock moves 1 to 2, a stalled one keeps 2)
+            wire adv_d = ce_next_i && rst_ni && (ce_i ? phase_q == 2'd1 : phase_q == 2'd2);
+            // adv_o from a register too (adv_en_q): ce_i && last_o is a LUT
+            // behind the phase register, which also steers every shared
+            // multiplier's operands, and every register of the pipeline
+            // hangs on adv_o (10,000 loads in csgrt_shade's B stages,
+            // tools/logic_depth.py). (* keep *): the two flip-flops have the
+            // same input, and yosys would merge them again (opt_merge).
+            reg  adv_en_q;
+            assign adv_o = adv_en_q;
+            (* keep *) always @(posedge clk_i) adv_q    <= adv_d;
+            (* keep *) always @(posedge clk_i) adv_en_q <= adv_d;
+            csgrt_check_same #(.WHAT("adv_o")) u_check_en (
+                .clk_i, .rst_ni, .copy_i(adv_en_q), .orig_i(ce_i && last_o));
         end
 
         csgrt_check_same #(.WHAT("adv_q_o (is ce_next_i the enable's next value?)")) u_check (
-            .clk_i, .rst_ni, .copy_i(adv_q), .orig_i(adv_o));
+            .clk_i, .rst_ni, .copy_i(adv_q), .orig_i(ce_i && last_o));
         if (II != 1 && II != 3) begin : g_bad_param
             initial begin
                 $display("ERROR %m: csgrt_beat needs II = 1 or 3");
