@@ -108,13 +108,19 @@ module csgrt_class_tree #(
     wire [H-1:0]  sib_slot = slot_i ^ {{(H-1){1'b0}}, 1'b1};
     wire [MB-1:0] slot_m   = slot_mat_i[slot_i*MB +: MB];
     wire          sib_flag = alt_i ? flags_alt_i[sib_slot] : flags_i[sib_slot];
-    wire [IW-1:0] sib_in   = (slot_used_i[sib_slot] && sib_flag) ?
-                             {1'b1, slot_mat_i[sib_slot*MB +: MB]} : {IW{1'b0}};
+    // The sibling slot's {used, material} and its flag are registered
+    // apart; stage 1 makes its IN/OUT value of them (IN m when used and
+    // IN). As one value here, the flag read (the slowest of stage 0's
+    // reads: the event's slot from the sorter, the walker's flag banks)
+    // went on through an AND into the register's reset pin, yosys's way
+    // to zero it: the walker's longest path out of context (77.63 MHz).
+    wire [IW-1:0] sib_in   = {slot_used_i[sib_slot], slot_mat_i[sib_slot*MB +: MB]};
     wire [1:0]    op1_in;                  // height 1's operator on the path
     reg  [NS-1:0] flags_q;
     reg  [H-1:0]  slot0_q;
     reg  [CW-1:0] path0_q;
-    reg  [IW-1:0] sib0_q;
+    reg  [IW-1:0] sib0_q;                  // the sibling slot's {used, material}
+    reg           sib_in0_q;               // ... and its flag
     reg  [1:0]    op1_q;
     always @(posedge clk_i)
         if (ce_i) begin
@@ -122,6 +128,7 @@ module csgrt_class_tree #(
             slot0_q <= slot_i;
             path0_q <= entering_i ? {2'd2, {MB{1'b0}}, slot_m} : {2'd2, slot_m, {MB{1'b0}}};
             sib0_q  <= sib_in;
+            sib_in0_q <= sib_flag;
             op1_q   <= op1_in;
         end
 
@@ -170,7 +177,8 @@ module csgrt_class_tree #(
             wire [H-j:0]  pos     = slot_w[j-1][H-1:j-1];  // the path's place on height j-1
             wire [IW-1:0] sib;
             if (j == 1) begin : g_sib_slot
-                assign sib = sib0_q;           // a slot, read in stage 0
+                // a slot, read in stage 0: IN m if used and IN, else OUT
+                assign sib = (sib_in0_q && sib0_q[MB]) ? sib0_q : {IW{1'b0}};
                 if (H > 1) begin : g_pos_up
                     wire unused_pos = ^pos[H-j:1];   // only pos[0] (the side) is read here
                 end
