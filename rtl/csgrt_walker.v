@@ -445,7 +445,11 @@ module csgrt_walker #(
                 gf_found_q <= grp_found;
                 gf_leaf_q  <= grp_leaf;
             end
-            if (w_park) pend_rec_q <= w_rec;
+            // loaded on every clock without a pending hit: it is read only
+            // while one is (p_out), and it holds from the park on. (On
+            // w_park, the tree's output through the walk's hit decision,
+            // its enable was the walker's longest path out of context.)
+            if (!pend_q) pend_rec_q <= w_rec;
         end
         if (!rst_ni) pend_q <= 1'b0;
         else if (ce) begin
@@ -453,6 +457,10 @@ module csgrt_walker #(
             else if (p_out) pend_q <= 1'b0;
         end
     end
+    // a hit parks only without one pending (the walk's records need live,
+    // which needs !pend_q), so pend_rec_q above holds the parked one
+    csgrt_check_same #(.WHAT("a park while a hit is pending (pend_rec_q)")) u_check_park (
+        .clk_i, .rst_ni, .copy_i(1'b0), .orig_i(ce && w_park && pend_q));
     csgrt_skid #(.WIDTH(OW)) u_out (
         .clk_i(clk_i), .rst_ni(rst_ni),
         .valid_i(res), .ready_o(sk_ready), .ready_next_o(sk_ready_next), .data_i(rec),
