@@ -41,7 +41,12 @@ module csgrt_skid #(
         out_valid_d  = out_valid_q;
         out_data_d   = out_data_q;
         skid_valid_d = skid_valid_q;
-        skid_data_d  = skid_data_q;
+        // The skid register takes data_i on every clock it is empty: it is
+        // read only while it holds a word, and the clock that catches one
+        // takes data_i. Its enable is then the register skid_valid_q, not
+        // valid_i and the output's stall (valid_i is often the end of the
+        // unit's longest decision: csgrt_walker's hit record, for one).
+        skid_data_d  = skid_valid_q ? skid_data_q : data_i;
         if (ready_i || !out_valid_q) begin
             // output register free (or being read): refill it, skid first
             if (skid_valid_q) begin
@@ -53,9 +58,8 @@ module csgrt_skid #(
                 out_data_d  = data_i;
             end
         end else if (valid_i && !skid_valid_q) begin
-            // output stalled: catch the word in flight
+            // output stalled: catch the word in flight (skid_data_d above)
             skid_valid_d = 1'b1;
-            skid_data_d  = data_i;
         end
     end
 
