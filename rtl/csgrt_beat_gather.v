@@ -6,13 +6,20 @@
 // The unit (a multiplier, a divider) runs on every running clock; item k of
 // a beat enters it at phase k, and d_i shows that item's result a latency
 // of 2 mod 3 clocks later, i.e. at phase (k + 2) mod 3 (the caller pads
-// the unit's latency to that). Each result is caught in a hold register
-// at its phase; the advance of the beat after the last catch (phase 2,
-// when hold 0 is about to take the next beat's first result) copies the N
-// held results to q_o, which keeps them for the whole following beat.
+// the unit's latency to that). The advance of the beat after the last
+// result (phase 2, when the next beat's first result shows) copies the N
+// results to q_o, which keeps them for the whole following beat.
 // Example, latency 2 (csgrt_mul): items x0 x1 x2 enter at phases 0 1 2 of
 // beat k; d_i shows x0 at phase 2 of beat k, x1 and x2 at phases 0 and 1
 // of beat k+1; q_o holds {x2, x1, x0} for all of beat k+2.
+//
+// Implementation: a shift register of the unit's last three outputs on
+// every running clock (item 0 the oldest), copied to q_o on the advance.
+// (Before, item k was caught in a hold register at its phase: the same
+// values, but on phase decodes ce_i && phase == k, which yosys shares
+// between every gather of a pipeline, LUT outputs with 3,000 to 4,000
+// clock enables each in tools/logic_depth.py's model; now every enable is
+// a register, ce_i or adv_i.)
 //
 // Handshake: none; ce_i low (the pipeline's stall) holds everything.
 module csgrt_beat_gather #(
@@ -21,21 +28,29 @@ module csgrt_beat_gather #(
 ) (
     input  wire               clk_i,
     input  wire               ce_i,      // the pipeline runs
-    input  wire [1:0]         phase_i,   // csgrt_beat's phase
+    input  wire               adv_i,     // the beat's advance (csgrt_beat's adv_o: ce_i at phase 2)
     input  wire [WIDTH-1:0]   d_i,       // the unit's output, item k at phase (k + 2) mod 3
     output wire [N*WIDTH-1:0] q_o        // item k at k*WIDTH
 );
 
-    wire [N*WIDTH-1:0] held;
+    // d_i of the last three running clocks: at the advance (phase 2) item 0
+    // (shown at phase 2 of the beat before) is three clocks back, item 1
+    // (phase 0) two, item 2 (phase 1) one
+    reg  [WIDTH-1:0] back1_q, back2_q, back3_q;
+    always @(posedge clk_i)
+        if (ce_i) begin
+            back1_q <= d_i;
+            back2_q <= back1_q;
+            back3_q <= back2_q;
+        end
+    wire [3*WIDTH-1:0] held = {back1_q, back2_q, back3_q};   // item k at k*WIDTH
     reg  [N*WIDTH-1:0] q_q;
-    genvar k;
+    always @(posedge clk_i)
+        if (adv_i) q_q <= held[N*WIDTH-1:0];
+    assign q_o = q_q;
     generate
-        for (k = 0; k < N; k = k + 1) begin : g_hold
-            localparam [1:0] CATCH = (k + 2) % 3;
-            reg [WIDTH-1:0] hold_q;
-            always @(posedge clk_i)
-                if (ce_i && phase_i == CATCH) hold_q <= d_i;
-            assign held[k*WIDTH +: WIDTH] = hold_q;
+        if (N < 3) begin : g_spare
+            wire unused_held = ^held[3*WIDTH-1:N*WIDTH];
         end
         if (WIDTH < 1 || N < 1 || N > 3) begin : g_bad_param
             initial begin
@@ -44,9 +59,6 @@ module csgrt_beat_gather #(
             end
         end
     endgenerate
-    always @(posedge clk_i)
-        if (ce_i && phase_i == 2'd2) q_q <= held;
-    assign q_o = q_q;
 
 endmodule
 

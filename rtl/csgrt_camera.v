@@ -174,7 +174,7 @@ module csgrt_camera #(
     wire [SQ-1:0]    unused_root;
     wire [SIDEW-1:0] d_side;
     csgrt_unit #(.VW(VW), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(SIDEW), .II(II)) u_unit (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .phase_i(ph), .valid_i(r_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(r_valid_q),
         .v_i(r_vr_q), .user_i(r_side_q),
         .valid_o(u_valid), .u_o(u_d), .root_o(unused_root), .user_o(d_side));
 

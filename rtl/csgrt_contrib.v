@@ -81,7 +81,7 @@ module csgrt_contrib #(
     wire            c0_valid;
     wire [UW0-1:0]  c0_u;
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(COL_W), .USER_WIDTH(UW0), .II(II)) u_keep (
-        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(i_valid), .a_i({3{keep}}), .b_i(diff),
+        .clk_i, .rst_ni, .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(i_valid), .a_i({3{keep}}), .b_i(diff),
         .user_i({i_w, i_tr, i_spec, i_local, i_tag}),
         .valid_o(c0_valid), .p_o(kd), .user_o(c0_u));
     wire [TAG_W-1:0]   c0_tag   = c0_u[0 +: TAG_W];
@@ -127,7 +127,7 @@ module csgrt_contrib #(
     wire             c2_valid;
     wire [TAG_W-1:0] c2_tag;
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(LW), .USER_WIDTH(TAG_W), .II(II)) u_w (
-        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(c1_valid_q), .a_i(c1_w_q), .b_i(c1_l_q), .user_i(c1_tag_q),
+        .clk_i, .rst_ni, .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(c1_valid_q), .a_i(c1_w_q), .b_i(c1_l_q), .user_i(c1_tag_q),
         .valid_o(c2_valid), .p_o(wl), .user_o(c2_tag));
     reg [38:0] contrib;
     integer c_out;

@@ -130,20 +130,20 @@ module csgrt_hit_prep #(
     // ---- X0: products ----------------------------------------------------------
     wire [3*(TW+B)-1:0] td;
     csgrt_mul_vec #(.A_WIDTH(TW), .B_WIDTH(B), .N(3), .II(II)) u_td (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .phase_i(ph), .a_i({3{i_t}}), .b_i(i_d), .p_o(td));
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(ph), .a_i({3{i_t}}), .b_i(i_d), .p_o(td));
     localparam WP = 21;   // rnd(16-bit x 16-bit, 12)
     wire [3*WP-1:0] ft_w, bg_w, wr_w;
     wire unused_v0, unused_v1, unused_u0, unused_u1;
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .II(II)) u_ft (
-        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(i_valid), .a_i({3{i_filter}}), .b_i(i_rgb),
+        .clk_i, .rst_ni, .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(i_valid), .a_i({3{i_filter}}), .b_i(i_rgb),
         .user_i(1'b0), .valid_o(unused_v0), .p_o(ft_w), .user_o(unused_u0));
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .II(II)) u_bg (
-        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(i_valid), .a_i(i_w), .b_i(background_i),
+        .clk_i, .rst_ni, .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(i_valid), .a_i(i_w), .b_i(background_i),
         .user_i(1'b0), .valid_o(unused_v1), .p_o(bg_w), .user_o(unused_u1));
     wire          x0_valid;
     wire [XW-1:0] x0_x;
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(XW), .II(II)) u_wr (
-        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(i_valid), .a_i(i_w), .b_i({3{i_reflection}}),
+        .clk_i, .rst_ni, .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(i_valid), .a_i(i_w), .b_i({3{i_reflection}}),
         .user_i(i_x), .valid_o(x0_valid), .p_o(wr_w), .user_o(x0_x));
     wire [3*B-1:0] x0_o = x0_x[4 +: 3*B];
 
@@ -219,10 +219,10 @@ module csgrt_hit_prep #(
     wire              left_le0;
     wire unused_v2, unused_u2;
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .II(II)) u_wt (
-        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(x1_valid_q), .a_i(x1_w), .b_i(x1_ft_q), .user_i(1'b0),
+        .clk_i, .rst_ni, .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(x1_valid_q), .a_i(x1_w), .b_i(x1_ft_q), .user_i(1'b0),
         .valid_o(unused_v2), .p_o(wt_w), .user_o(unused_u2));
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(YW + DIST_W + 1), .II(II)) u_at (
-        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(x1_valid_q), .a_i(x1_atten), .b_i(x1_ft_q),
+        .clk_i, .rst_ni, .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(x1_valid_q), .a_i(x1_atten), .b_i(x1_ft_q),
         .user_i({x1_left_le0, x1_left[DIST_W-1:0], x1_bg_q, x1_wr_q, x1_in_range_q, x1_p_q, x1_x_q}),
         .valid_o(x2_valid), .p_o(at_w), .user_o({left_le0, left, x2_y}));
     wire [XW-1:0]     x2_x        = x2_y[0 +: XW];
@@ -293,7 +293,7 @@ module csgrt_hit_prep #(
     wire [ZW-1:0]   x4_z;
     wire [47:0]     lc = light_color_i[x3_light_q * 48 +: 48];
     csgrt_weigh #(.A_WIDTH(16), .B_WIDTH(16), .USER_WIDTH(ZW), .II(II)) u_sc (
-        .clk_i, .rst_ni, .ce_i(en), .phase_i(ph), .valid_i(x3_valid_q), .a_i(lc), .b_i(x3_term_q),
+        .clk_i, .rst_ni, .ce_i(en), .adv_i(adv), .phase_i(ph), .valid_i(x3_valid_q), .a_i(lc), .b_i(x3_term_q),
         .user_i({x3_ends_q, x3_tlimit_q, x3_atten_q, x3_wt_q, x3_y_q}),
         .valid_o(x4_valid), .p_o(sc_w), .user_o(x4_z));
     reg [47:0] sc;

@@ -38,6 +38,7 @@ module csgrt_mul_vec #(
     input  wire                           clk_i,
     input  wire                           rst_ni,    // synchronous, active low
     input  wire                           ce_i,      // the pipeline runs (low = stall)
+    input  wire                           adv_i,     // the beat's advance: csgrt_beat's adv_o (II = 3)
     input  wire [1:0]                     phase_i,   // csgrt_beat's phase (II = 3)
     input  wire [N*A_WIDTH-1:0]           a_i,       // pair k at k*A_WIDTH
     input  wire [N*B_WIDTH-1:0]           b_i,
@@ -49,7 +50,7 @@ module csgrt_mul_vec #(
     genvar k;
     generate
         if (II == 1) begin : g_parallel
-            wire unused_phase = ^phase_i;
+            wire unused_phase = ^{phase_i, adv_i};
             for (k = 0; k < N; k = k + 1) begin : g_mul
                 wire unused_v;
                 csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH)) u_mul (
@@ -83,7 +84,7 @@ module csgrt_mul_vec #(
                 .a_i(a_sel), .b_i(b_sel), .valid_o(unused_v), .p_o(prod));
             // pair k's product comes out two clocks after phase k: gathered
             csgrt_beat_gather #(.WIDTH(PW), .N(N)) u_gather (
-                .clk_i(clk_i), .ce_i(ce_i), .phase_i(phase_i), .d_i(prod), .q_o(p_o));
+                .clk_i(clk_i), .ce_i(ce_i), .adv_i(adv_i), .d_i(prod), .q_o(p_o));
         end
 
         if (A_WIDTH < 2 || B_WIDTH < 2 || N < 1 || N > 3 || (II != 1 && II != 3)) begin : g_bad_param

@@ -204,7 +204,7 @@ module csgrt_shade #(
     // ---- A0: t d_i ---------------------------------------------------------
     wire [3*(TW+B)-1:0] td;
     csgrt_mul_vec #(.A_WIDTH(TW), .B_WIDTH(B), .N(3), .II(II)) u_mul_a0 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .adv_i(adv_a), .phase_i(ph_a),
         .a_i({3{in_t}}), .b_i(in_side[3*B +: 3*B]), .p_o(td));
     wire           a0_valid;
     wire [A0W-1:0] a0_side;
@@ -266,7 +266,7 @@ module csgrt_shade #(
                 assign ks_row[j*KSW +: KSW] = a1_ks_q[CI*KSW +: KSW];
             end
             csgrt_mul_vec #(.A_WIDTH(KSW), .B_WIDTH(PSW), .N(3), .II(II)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .adv_i(adv_a), .phase_i(ph_a),
                 .a_i(ks_row), .b_i(a1_ps_q), .p_o(gp[3*i*GPW +: 3*GPW]));
         end
     endgenerate
@@ -317,7 +317,7 @@ module csgrt_shade #(
     wire [3*NVW-1:0] a9_n;
     wire [A4W-1:0]   a9_side;
     csgrt_shade_unit #(.VW(GW), .USER_WIDTH(A4W), .II(II)) u_unit_n (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a), .valid_i(a3_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .adv_i(adv_a), .phase_i(ph_a), .valid_i(a3_valid_q),
         .v_i(a3_g_q), .user_i({a3_pix_q, a3_pd_q}),
         .valid_o(a9_valid), .u_o(a9_n), .user_o(a9_side));
     wire [3*DSW-1:0] a9_ds = a9_side[3*PSW +: 3*DSW];
@@ -326,7 +326,7 @@ module csgrt_shade #(
     localparam NDPW = NVW + DSW;   // 34
     wire [3*NDPW-1:0] nds;
     csgrt_mul_vec #(.A_WIDTH(NVW), .B_WIDTH(DSW), .N(3), .II(II)) u_mul_a10 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .adv_i(adv_a), .phase_i(ph_a),
         .a_i(a9_n), .b_i(a9_ds), .p_o(nds));
     wire             a10_valid;
     wire [3*NVW-1:0] a10_n;
@@ -381,7 +381,7 @@ module csgrt_shade #(
             localparam DNPW = DNW + NVW;   // 35
             wire [3*DNPW-1:0] dnn;
             csgrt_mul_vec #(.A_WIDTH(DNW), .B_WIDTH(NVW), .N(3), .II(II)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .phase_i(ph_a),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .adv_i(adv_a), .phase_i(ph_a),
                 .a_i({3{a11_dn_q}}), .b_i(a11_n_q), .p_o(dnn));
             for (i = 0; i < 3; i = i + 1) begin : g_a13
                 // rnd(2 x, 15) = rnd(x, 14)
@@ -501,7 +501,7 @@ module csgrt_shade #(
     wire [3*NVW-1:0] b7_l;
     wire [XBW-1:0]   b7_x;
     csgrt_shade_unit #(.VW(GW), .USER_WIDTH(XBW), .II(II)) u_unit_l (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b), .valid_i(b1_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b), .valid_i(b1_valid_q),
         .v_i(b1_lv_q), .user_i(b1_x_q),
         .valid_o(b7_valid), .u_o(b7_l), .user_o(b7_x));
     wire [47:0]      b7_lcol = b7_x[0 +: 48];
@@ -516,12 +516,12 @@ module csgrt_shade #(
     wire [3*NLPW-1:0] nl_p;
     wire [3*RLPW-1:0] rl_p;
     csgrt_mul_vec #(.A_WIDTH(NVW), .B_WIDTH(NVW), .N(3), .II(II)) u_mul_b8n (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
         .a_i(b7_n), .b_i(b7_l), .p_o(nl_p));
     generate
         if (SPECULAR != 0) begin : g_b8r
             csgrt_mul_vec #(.A_WIDTH(RW), .B_WIDTH(NVW), .N(3), .II(II)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
                 .a_i(b7_r), .b_i(b7_l), .p_o(rl_p));
         end else begin : g_no_b8r
             assign rl_p = {(3*RLPW){1'b0}};   // cos_r = 0: no highlight
@@ -616,7 +616,7 @@ module csgrt_shade #(
                     assign pb = {base_in, base_in};
                 end
                 csgrt_mul_vec #(.A_WIDTH(NDW), .B_WIDTH(NDW), .N(NPR), .II(II)) u_mul (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
                     .a_i(pa), .b_i(pb), .p_o(pp));
                 if (i == 0) begin : g_first
                     assign pw_res[(i+1)*NDW +: NDW] = bit_k ? base_dly : res_dly;
@@ -649,7 +649,7 @@ module csgrt_shade #(
             localparam PHPW = 17 + NDW;   // 35
             wire [PHPW-1:0] php;
             csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(NDW), .N(1), .II(II)) u_mul_ph (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
                 .a_i({1'b0, b10_pix[PX_PH +: 16]}), .b_i(b10_pw), .p_o(php));
             csgrt_delay #(.WIDTH(PSDW), .STAGES(2)) u_dly_b11 (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(b10_valid),
@@ -677,7 +677,7 @@ module csgrt_shade #(
         end
         if (SPECULAR != 0) begin : g_b12s
             csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(NDW), .N(3), .II(II)) u_mul (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
                 .a_i(b11_lc17), .b_i({3{b11_ph}}), .p_o(lsp));
         end else begin : g_no_b12s
             assign lsp = {(3*LPW){1'b0}};
@@ -685,7 +685,7 @@ module csgrt_shade #(
         end
     endgenerate
     csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(NDW), .N(3), .II(II)) u_mul_b12d (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
         .a_i(b11_lc17), .b_i({3{b11_ndl}}), .p_o(ldp));
     localparam X3W = 2 + PIXW + 3;   // {enables, flags, pix}
     wire           b12_valid;
@@ -738,7 +738,7 @@ module csgrt_shade #(
     localparam DDPW = 17 + DAW;
     wire [3*DDPW-1:0] ddp;
     csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(DAW), .N(3), .II(II)) u_mul_c1 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
         .a_i({3{1'b0, c0_pix_q[PX_DIF +: 16]}}), .b_i(dacc_q), .p_o(ddp));
     wire             c1_valid;
     wire [PIXW-1:0]  c1_pix;
@@ -780,7 +780,7 @@ module csgrt_shade #(
         end
     endgenerate
     csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(IW), .N(3), .II(II)) u_mul_c3 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .phase_i(ph_b),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
         .a_i(c2_rgb17), .b_i(c2_int_q), .p_o(cp));
     wire             c3_valid;
     wire [PIXW-1:0]  c3_pix;

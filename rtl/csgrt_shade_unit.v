@@ -18,6 +18,7 @@ module csgrt_shade_unit #(
     input  wire                  clk_i,
     input  wire                  rst_ni,   // synchronous, active low (valid bits only)
     input  wire                  ce_i,     // the pipeline runs (low = stall)
+    input  wire                  adv_i,    // the beat's advance: csgrt_beat's adv_o
     input  wire [1:0]            phase_i,  // csgrt_beat's phase (II = 3)
     input  wire                  valid_i,
     input  wire [3*VW-1:0]       v_i,      // x, y, z (x low), any common fraction
@@ -32,7 +33,7 @@ module csgrt_shade_unit #(
     wire [16:0] unused_root;
 
     csgrt_unit #(.VW(VW), .FRAC(15), .SQRT_STAGES(17), .USER_WIDTH(USER_WIDTH), .II(II)) u_unit (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .phase_i(phase_i), .valid_i(valid_i),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .adv_i(adv_i), .phase_i(phase_i), .valid_i(valid_i),
         .v_i(v_i), .user_i(user_i),
         .valid_o(valid_o), .u_o(u_o), .root_o(unused_root), .user_o(user_o));
 

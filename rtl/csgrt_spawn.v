@@ -1032,10 +1032,10 @@ module csgrt_spawn #(
             assign base[i*LVW +: LVW] = (SH && (!RDN || c0_kind_q == KIND_SHADOW)) ? l : d_b;
         end
         csgrt_mul_vec #(.A_WIDTH(XAW), .B_WIDTH(XBW), .N(3), .II(II)) u_mul_x (
-            .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_i(ph_c), .a_i(xa_v), .b_i(xb_v), .p_o(xp));
+            .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .adv_i(adv_c), .phase_i(ph_c), .a_i(xa_v), .b_i(xb_v), .p_o(xp));
         if (RF) begin : g_y
             csgrt_mul_vec #(.A_WIDTH(YAW), .B_WIDTH(YBW), .N(3), .II(II)) u_mul_y (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_i(ph_c), .a_i({3{c0_a_q}}), .b_i(c0_n_q),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .adv_i(adv_c), .phase_i(ph_c), .a_i({3{c0_a_q}}), .b_i(c0_n_q),
                 .p_o(yp));
         end else begin : g_no_y
             assign yp = {(3*YPW){1'b0}};
@@ -1129,7 +1129,7 @@ module csgrt_spawn #(
     wire [SQ-1:0]    u2_root;
     wire [U2UW-1:0]  u2_user;
     csgrt_unit #(.VW(VW2), .FRAC(F), .SQRT_STAGES(SQ), .USER_WIDTH(U2UW), .II(II)) u_unit_c (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .phase_i(ph_c), .valid_i(c3_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .adv_i(adv_c), .phase_i(ph_c), .valid_i(c3_valid_q),
         .v_i(c3_v_q), .user_i({c3_lit_q, c3_last_q, c3_light_q, c3_kind_q}),
         .valid_o(u2_valid), .u_o(u2_u), .root_o(u2_root), .user_o(u2_user));
     wire [2:0]    o_kind  = u2_user[0 +: 3];

@@ -39,6 +39,7 @@ module csgrt_unit #(
     input  wire                    clk_i,
     input  wire                    rst_ni,   // synchronous, active low (valid bits only)
     input  wire                    ce_i,     // the pipeline runs (low = stall)
+    input  wire                    adv_i,    // the beat's advance: csgrt_beat's adv_o (a register)
     input  wire [1:0]              phase_i,  // csgrt_beat's phase (II = 3; 0 for II = 1)
     input  wire                    valid_i,
     input  wire [3*VW-1:0]         v_i,      // x, y, z (x low), two's complement
@@ -63,12 +64,14 @@ module csgrt_unit #(
     genvar i;
 
     // every register but the shared multiplier's moves on the beat's advance
-    wire adv = ce_i && (II == 1 || phase_i == 2'd2);
+    wire adv = adv_i;
+    csgrt_check_same #(.WHAT("adv_i (is it the beat's adv_o?)")) u_check_adv (
+        .clk_i, .rst_ni, .copy_i(adv_i), .orig_i(ce_i && (II == 1 || phase_i == 2'd2)));
 
     // ---- M: squares -----------------------------------------------------------
     wire [3*PW-1:0] sq;
     csgrt_mul_vec #(.A_WIDTH(VW), .B_WIDTH(VW), .N(3), .II(II)) u_sq (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .phase_i(phase_i),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .adv_i(adv_i), .phase_i(phase_i),
         .a_i(v_i), .b_i(v_i), .p_o(sq));
     wire          m_valid;
     wire [MW-1:0] m_side;
@@ -167,7 +170,7 @@ module csgrt_unit #(
             end
             wire [3*(QB+1)-1:0] gathered;
             csgrt_beat_gather #(.WIDTH(QB + 1), .N(3)) u_gather (
-                .clk_i(clk_i), .ce_i(ce_i), .phase_i(phase_i), .d_i(padded), .q_o(gathered));
+                .clk_i(clk_i), .ce_i(ce_i), .adv_i(adv_i), .d_i(padded), .q_o(gathered));
             for (i = 0; i < 3; i = i + 1) begin : g_quot
                 assign d_mag[i*QB +: QB] = gathered[i*(QB+1) +: QB];
                 assign d_neg[i]          = gathered[i*(QB+1) + QB];

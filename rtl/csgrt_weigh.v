@@ -21,6 +21,7 @@ module csgrt_weigh #(
     input  wire                    clk_i,
     input  wire                    rst_ni,   // synchronous, active low (valid bits only)
     input  wire                    ce_i,     // the pipeline runs (low = stall)
+    input  wire                    adv_i,    // the beat's advance: csgrt_beat's adv_o (a register)
     input  wire [1:0]              phase_i,  // csgrt_beat's phase (II = 3; 0 for II = 1)
     input  wire                    valid_i,
     input  wire [3*A_WIDTH-1:0]    a_i,      // channel c at c*A_WIDTH
@@ -37,8 +38,10 @@ module csgrt_weigh #(
     wire [3*(B_WIDTH+1)-1:0] b_x;
     wire [3*MW-1:0]          prods;
     csgrt_mul_vec #(.A_WIDTH(A_WIDTH + 1), .B_WIDTH(B_WIDTH + 1), .N(3), .II(II)) u_mul (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .phase_i(phase_i), .a_i(a_x), .b_i(b_x), .p_o(prods));
-    wire adv = ce_i && (II == 1 || phase_i == 2'd2);   // the beat's advance
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .adv_i(adv_i), .phase_i(phase_i), .a_i(a_x), .b_i(b_x), .p_o(prods));
+    wire adv = adv_i;   // the beat's advance
+    csgrt_check_same #(.WHAT("adv_i (is it the beat's adv_o?)")) u_check_adv (
+        .clk_i, .rst_ni, .copy_i(adv_i), .orig_i(ce_i && (II == 1 || phase_i == 2'd2)));
 
     genvar c;
     generate

@@ -60,7 +60,8 @@ module tb_mul_vec #(
                 assign p_o[(3*k+j)*2*MAXW +: 2*MAXW] = {(2*MAXW){1'b0}};
             end
             csgrt_mul_vec #(.A_WIDTH(WA), .B_WIDTH(WB), .N(NP), .II(II)) u_mul (
-                .clk_i, .rst_ni, .ce_i, .phase_i((II == 3) ? phase3_o : phase1), .a_i(a), .b_i(b), .p_o(p));
+                .clk_i, .rst_ni, .ce_i, .adv_i((II == 3) ? adv3_o : adv1_o), .phase_i((II == 3) ? phase3_o : phase1),
+                .a_i(a), .b_i(b), .p_o(p));
         end
     endgenerate
     wire unused_slots = ^{a_i, b_i};   // the slots' bits above each instance's widths
