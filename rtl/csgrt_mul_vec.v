@@ -7,10 +7,11 @@
 // II = 3: the enclosing pipeline advances once a beat (csgrt_beat's adv, the
 // clock of phase 2), so a_i and b_i are steady for a whole beat. Phase k
 // feeds pair k to the multiplier (csgrt_mul, which runs on every running
-// clock); its product comes out two clocks later and is caught in a hold
-// register: pair 0 at phase 2 of the same beat, pair 1 at phase 0 and pair 2
-// at phase 1 of the next. The next beat's advance copies the held products
-// to p_o, which then holds them for the whole beat after (csgrt_beat_gather).
+// clock); its product comes out two clocks later: pair 0 at phase 2 of the
+// same beat, pair 1 at phase 0 and pair 2 at phase 1 of the next. The next
+// beat's advance (adv_i) copies the three to p_o, which then holds them for
+// the whole beat after (csgrt_beat_gather, which keeps the multiplier's
+// last three outputs).
 // Timeline, beat k with pairs x0..x2, beat k+1 with y0..y2 (each column one
 // clock):
 //   beat         k          | k+1        | k+2
@@ -24,7 +25,7 @@
 // So p_o shows the products of the operands of two beats earlier, as
 // csgrt_mul's p_o shows those of two enabled clocks earlier: the pipeline
 // around it keeps its delay lines (csgrt_delay, two stages on adv).
-// II = 1: N csgrt_mul on ce_i (phase_i unused).
+// II = 1: N csgrt_mul on ce_i (phase_i and adv_i unused).
 //
 // Latency: 2 beats (II = 1: 2 enabled clocks). Handshake: none (the
 // enclosing pipeline's stall ce_i; everything holds while it is low).
