@@ -48,6 +48,12 @@ module csgrt_mul_vec #(
 
     localparam PW = A_WIDTH + B_WIDTH;
 
+    // adv_i must be the beat's advance: every time-shared unit passes it
+    // down to here (csgrt_weigh, csgrt_unit and the direct users alike),
+    // so the one check covers them all
+    csgrt_check_same #(.WHAT("adv_i (is it the beat's adv_o?)")) u_check_adv (
+        .clk_i, .rst_ni, .copy_i(adv_i), .orig_i(ce_i && (II == 1 || phase_i == 2'd2)));
+
     genvar k;
     generate
         if (II == 1) begin : g_parallel

@@ -65,8 +65,6 @@ module csgrt_unit #(
 
     // every register but the shared multiplier's moves on the beat's advance
     wire adv = adv_i;
-    csgrt_check_same #(.WHAT("adv_i (is it the beat's adv_o?)")) u_check_adv (
-        .clk_i, .rst_ni, .copy_i(adv_i), .orig_i(ce_i && (II == 1 || phase_i == 2'd2)));
 
     // ---- M: squares -----------------------------------------------------------
     wire [3*PW-1:0] sq;

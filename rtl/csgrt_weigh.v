@@ -40,8 +40,6 @@ module csgrt_weigh #(
     csgrt_mul_vec #(.A_WIDTH(A_WIDTH + 1), .B_WIDTH(B_WIDTH + 1), .N(3), .II(II)) u_mul (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .adv_i(adv_i), .phase_i(phase_i), .a_i(a_x), .b_i(b_x), .p_o(prods));
     wire adv = adv_i;   // the beat's advance
-    csgrt_check_same #(.WHAT("adv_i (is it the beat's adv_o?)")) u_check_adv (
-        .clk_i, .rst_ni, .copy_i(adv_i), .orig_i(ce_i && (II == 1 || phase_i == 2'd2)));
 
     genvar c;
     generate
