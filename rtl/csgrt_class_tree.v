@@ -45,8 +45,7 @@
 // height j-1's 2^(H-j+1) registers in stage j itself, stage 2 was 10 to
 // 11 LUT levels, the longest path of the whole design by
 // tools/logic_depth.py.)
-// Latency: TREE_HEIGHT + 1 clocks (counted in enabled clocks); the
-// configuration is read through copies a clock behind its inputs.
+// Latency: TREE_HEIGHT + 1 clocks (counted in enabled clocks).
 // Throughput: one event per clock.
 // Handshake: none inside; ce_i is a global stage enable (low holds every
 // stage), the walker issues events and stalls the pipeline as a whole.
@@ -105,35 +104,9 @@ module csgrt_class_tree #(
     // ago, computed from its children's values of the clock before. The
     // value of the node or slot that holds the event's slot is computed too
     // but never read: the path below replaces it.
-    // ---- the configuration, copied next to the tree ----------------------
-    // The configuration comes from the scene loader's registers, one place
-    // on the die, and feeds every node's operator and every slot's read
-    // (loader -> tree: 1,222 endpoints beyond 10 ns in the whole design's
-    // model, tools/logic_depth.py; the walker's longest path out of
-    // context started at a configuration input, 11.85 ns). Copies loaded
-    // on every clock can sit beside the nodes that read them. They lag
-    // the inputs by a clock, which nothing sees: the configuration is
-    // static while events flow, and a check below stops the simulation if
-    // it changes within a clock of an event.
-    reg [2*NS-1:0]  node_op_q;
-    reg [MB*NS-1:0] slot_mat_q;
-    reg [NS-1:0]    slot_used_q;
-    always @(posedge clk_i) begin
-        node_op_q   <= node_op_i;
-        slot_mat_q  <= slot_mat_i;
-        slot_used_q <= slot_used_i;
-    end
-`ifndef SYNTHESIS
-    always @(posedge clk_i)
-        if (rst_ni && valid_i && {node_op_q, slot_mat_q, slot_used_q} != {node_op_i, slot_mat_i, slot_used_i}) begin
-            $display("ERROR %m: the configuration changed less than a clock before an event (it must be static while events flow)");
-            $fatal;
-        end
-`endif
-
     // ---- stage 0: the event's reads by its slot, registered --------------
     wire [H-1:0]  sib_slot = slot_i ^ {{(H-1){1'b0}}, 1'b1};
-    wire [MB-1:0] slot_m   = slot_mat_q[slot_i*MB +: MB];
+    wire [MB-1:0] slot_m   = slot_mat_i[slot_i*MB +: MB];
     wire          sib_flag = alt_i ? flags_alt_i[sib_slot] : flags_i[sib_slot];
     // The sibling slot's {used, material} and its flag are registered
     // apart; stage 1 makes its IN/OUT value of them (IN m when used and
@@ -141,7 +114,7 @@ module csgrt_class_tree #(
     // reads: the event's slot from the sorter, the walker's flag banks)
     // went on through an AND into the register's reset pin, yosys's way
     // to zero it: the walker's longest path out of context (77.63 MHz).
-    wire [IW-1:0] sib_in   = {slot_used_q[sib_slot], slot_mat_q[sib_slot*MB +: MB]};
+    wire [IW-1:0] sib_in   = {slot_used_i[sib_slot], slot_mat_i[sib_slot*MB +: MB]};
     wire [1:0]    op1_in;                  // height 1's operator on the path
     reg  [NS-1:0] flags_q;
     reg  [H-1:0]  slot0_q;
@@ -164,23 +137,23 @@ module csgrt_class_tree #(
     genvar s, i, j, k;
     generate
         if (H == 1) begin : g_op1_root
-            assign op1_in = node_op_q[3:2];
+            assign op1_in = node_op_i[3:2];
         end else begin : g_op1
             wire [1:0] ops1 [0:(NS>>1)-1];
             for (k = 0; k < (NS >> 1); k = k + 1) begin : g_op
-                assign ops1[k] = node_op_q[2*((NS >> 1) + k) +: 2];
+                assign ops1[k] = node_op_i[2*((NS >> 1) + k) +: 2];
             end
             assign op1_in = ops1[slot_i[H-1:1]];
         end
         for (s = 0; s < NS; s = s + 1) begin : g_slot
-            assign io_w[NS + s] = (slot_used_q[s] && flags_q[s]) ? {1'b1, slot_mat_q[s*MB +: MB]} : {IW{1'b0}};
+            assign io_w[NS + s] = (slot_used_i[s] && flags_q[s]) ? {1'b1, slot_mat_i[s*MB +: MB]} : {IW{1'b0}};
         end
         for (i = 2; i < NS; i = i + 1) begin : g_node
             // (One register per generate block rather than an array written
             // element by element: the Verilator model writes each as a
             // variable of its own, without a delayed-assignment flag.)
             reg [IW-1:0] io_q;
-            assign io_d[i] = inout_combine(node_op_q[2*i +: 2], io_w[2*i], io_w[2*i+1]);
+            assign io_d[i] = inout_combine(node_op_i[2*i +: 2], io_w[2*i], io_w[2*i+1]);
             always @(posedge clk_i)
                 if (ce_i) io_q <= io_d[i];
             assign io_w[i] = io_q;
@@ -240,13 +213,13 @@ module csgrt_class_tree #(
             if (j == 1) begin : g_first
                 assign op = op1_q;             // read in stage 0
             end else if (j == H) begin : g_root
-                assign op = node_op_q[3:2];
+                assign op = node_op_i[3:2];
             end else begin : g_inner
                 // the operators of height j as an array, indexed by the
                 // slot's bits above j; chosen in stage j-1 (slot_w[j-2])
                 wire [1:0] ops [0:(NS>>j)-1];
                 for (k = 0; k < (NS >> j); k = k + 1) begin : g_op
-                    assign ops[k] = node_op_q[2*((NS >> j) + k) +: 2];
+                    assign ops[k] = node_op_i[2*((NS >> j) + k) +: 2];
                 end
                 reg [1:0] op_q;
                 always @(posedge clk_i)
@@ -285,7 +258,7 @@ module csgrt_class_tree #(
     // else nodes whose io_q is read by nobody, their siblings being chosen
     // from io_d a clock early) and io_d's spare entries NS, NS+1 (so that
     // the array is not empty when H = 1)
-    wire unused_cfg = ^{node_op_q[1:0], slot_w[H], io_w[2], io_w[3], io_d[NS], io_d[NS+1]};
+    wire unused_cfg = ^{node_op_i[1:0], slot_w[H], io_w[2], io_w[3], io_d[NS], io_d[NS+1]};
     assign io_d[NS]   = {IW{1'b0}};
     assign io_d[NS+1] = {IW{1'b0}};
 

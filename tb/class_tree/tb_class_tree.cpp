@@ -141,11 +141,6 @@ void run(int configs, int events_per_config, uint64_t seed) {
                 put(used, lay.leaf_slot[l], 1, 1);
             }
         });
-        // the tree takes its configuration a clock later (its copies beside
-        // the nodes): one clock without an event before the first
-        p.ce() = 0;
-        p.valid() = 0;
-        tick();
         struct Want {
             Class c;
             uint64_t cyc;
