@@ -21,7 +21,10 @@
 //   slot_i       the event's slot: BORDER 0,m when entering_i, else BORDER m,0
 //   tag_i        TAG_WIDTH bits carried alongside unchanged
 // Output: class_o {kind, from, to} as csgrt_class_node (kind 0 OUT, 1 IN,
-// 2 BORDER), with valid_o and tag_o.
+// 2 BORDER), with valid_o and tag_o; border_o = a crossing of a surface,
+// BORDER from, to with from != to, decoded in the root's stage (a
+// register: the decode at the output was the first two LUT levels of
+// csgrt_walker's hit decision, its longest path out of context).
 //
 // Evaluated along one path: an event makes one slot BORDER, so only the H
 // nodes between that slot and the root can see a BORDER; every other
@@ -72,6 +75,7 @@ module csgrt_class_tree #(
     // classification out
     output wire                             valid_o,
     output wire [2*MAT_BITS+1:0]            class_o,
+    output wire                             border_o,   // class_o is BORDER from, to with from != to
     output wire [TAG_WIDTH-1:0]             tag_o
 );
 
@@ -238,6 +242,12 @@ module csgrt_class_tree #(
                 end
             assign path_w[j] = path_q;
             assign slot_w[j] = slot_q;
+            if (j == H) begin : g_border
+                reg border_q;
+                always @(posedge clk_i)
+                    if (ce_i) border_q <= c[CW-1 -: 2] == 2'd2 && c[MB +: MB] != c[0 +: MB];
+                assign border_o = border_q;
+            end
         end
         if (H < 1) begin : g_bad_param
             initial begin
@@ -252,6 +262,11 @@ module csgrt_class_tree #(
         .valid_i(valid_i), .data_i(tag_i), .valid_o(valid_o), .data_o(tag_o));
 
     assign class_o = path_w[H];
+    // border_o is the decode of class_o, made a clock early: checked
+    wire [CW-1:0] class_out = path_w[H];
+    csgrt_check_same #(.WHAT("border_o")) u_check_border (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(border_o),
+        .orig_i(class_out[CW-1 -: 2] == 2'd2 && class_out[MB +: MB] != class_out[0 +: MB]));
 
     // position 0 of the heap is unused; the slot index's last stage is not
     // read; heap positions 2 and 3 (the root's children: slots when H = 1,

@@ -200,7 +200,12 @@ module csgrt_walker #(
     wire          t_ent  = tg[0];
     wire [MB-1:0] c_from = tc[MB +: MB];
     wire [MB-1:0] c_to   = tc[0 +: MB];
-    wire          border = tc[CW-1 -: 2] == 2'd2 && c_from != c_to;
+    // tc is BORDER c_from, c_to with c_from != c_to: the tree's register
+    // (decoded here from tc, it was the first two LUT levels of the hit
+    // decision into the output skid, the walker's longest path)
+    wire          t_border;
+    wire          border = t_border;
+    wire [1:0]    unused_kind = tc[CW-1 -: 2];
     wire          live_tok = tv && !done_q[t_seq];
     reg           pend_q;                     // a hit waits for its surface (below)
     // a token of the walk: not a probe, and no hit of its ray pending
@@ -280,7 +285,7 @@ module csgrt_walker #(
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce),
         .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
         .valid_i(issue), .flags_i(fl_cur), .flags_alt_i(gfl_q), .alt_i(probe), .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
-        .valid_o(tv), .class_o(tc), .tag_o(tg));
+        .valid_o(tv), .class_o(tc), .border_o(t_border), .tag_o(tg));
 
     // ---- flags just before the hit --------------------------------------
     // The flags before the output token's crossing: its bank without the
@@ -568,7 +573,7 @@ module csgrt_walker #(
                 wire              need_q    = run_tok && !same_t && !own_leaf && !ans_q;
                 wire              decided   = run_tok && !need_q;
                 wire              member    = same_t || (!own_leaf && beyond_q);
-                wire              m_border  = !t_skip && tc[CW-1 -: 2] == 2'd2 && c_from != c_to;
+                wire              m_border  = !t_skip && border;
                 wire [MB-1:0]     new_to    = (member && m_border) ? c_to : la_to_q;
                 wire              end_after = decided && member && (t_last || !mat_clear_i[new_to]);
                 wire              end_before= decided && !member;

@@ -81,6 +81,7 @@ Class unpack(uint32_t v) { return {Class::Kind((v >> 16) & 3), uint8_t(v >> 8), 
         uint8_t& alt() { return t->h##H##_alt_i; }                                           \
         bool out_valid() { return t->h##H##_valid_o; }                                       \
         uint32_t out_class() { return t->h##H##_class_o; }                                   \
+        bool out_border() { return t->h##H##_border_o; }                                    \
         int out_tag() { return t->h##H##_tag_o; }                                           \
     };
 TREE_PORTS(8)
@@ -197,10 +198,13 @@ void run(int configs, int events_per_config, uint64_t seed) {
                     max_lat = std::max(max_lat, lat);
                     min_lat = std::min(min_lat, lat);
                     ++checked;
-                    if (p.out_class() != pack(w.c) || p.out_tag() != int((sent - int(want.size())) & 0xffff)) {
+                    const bool crossing = w.c.kind == Class::BORDER && w.c.from != w.c.to;
+                    if (p.out_class() != pack(w.c) || p.out_border() != crossing ||
+                        p.out_tag() != int((sent - int(want.size())) & 0xffff)) {
                         if (++mismatches < 10)
                             ADD_FAILURE() << "H=" << H << " " << w.what << ": DUT " << unpack(p.out_class()).str()
-                                          << " tag " << p.out_tag() << ", model " << w.c.str();
+                                          << " border " << p.out_border() << " tag " << p.out_tag()
+                                          << ", model " << w.c.str();
                     }
                     want.pop_front();
                 }

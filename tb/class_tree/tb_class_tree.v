@@ -20,6 +20,7 @@
     input  wire [15:0] h``H``_tag_i, \
     output wire h``H``_valid_o, \
     output wire [17:0] h``H``_class_o, \
+    output wire h``H``_border_o, \
     output wire [15:0] h``H``_tag_o
 
 // the instance of height H on those ports
@@ -30,7 +31,7 @@
         .valid_i(h``H``_valid_i), .flags_i(h``H``_flags_i), \
         .flags_alt_i(h``H``_flags_alt_i), .alt_i(h``H``_alt_i), .slot_i(h``H``_slot_i), \
         .entering_i(h``H``_entering_i), .tag_i(h``H``_tag_i), \
-        .valid_o(h``H``_valid_o), .class_o(h``H``_class_o), .tag_o(h``H``_tag_o));
+        .valid_o(h``H``_valid_o), .class_o(h``H``_class_o), .border_o(h``H``_border_o), .tag_o(h``H``_tag_o));
 
 module tb_class_tree (
     `TB_TREE_PORTS(8, 256),
