@@ -170,19 +170,20 @@
 // take most of the LUTs in every configuration.
 //
 // ---- Timing --------------------------------------------------------------------
-// Latency (no back-pressure, idle front): 5F+63 clocks from a hit's
-// acceptance to its first child (BITS 12: 108, 16: 128, 24: 168, 32: 208);
-// without REFRACTION 4F+57 (the sequencer takes the hit from the normal's
-// queue, F+6 clocks before S6 would have finished: BITS 12: 93, 16: 109,
-// 24: 141, 32: 173; 4F+56 before the queue moved to block RAM, whose head
-// comes one clock later). The consumer (csgrt_raytree) takes children by
+// Latency (no back-pressure, idle front): 5F+64 clocks from a hit's
+// acceptance to its first child (BITS 12: 109, 16: 129, 24: 169, 32: 209);
+// without REFRACTION 4F+58 (the sequencer takes the hit from the normal's
+// queue, F+6 clocks before S6 would have finished: BITS 12: 94, 16: 110,
+// 24: 142, 32: 174; 4F+56 before the queue moved to block RAM, whose head
+// comes one clock later, and one clock less before the gradient's products
+// were registered ahead of their accumulation, gp_q). The consumer (csgrt_raytree) takes children by
 // valid/ready and m_user_o and assumes no latency.
 // Throughput: one child per clock while hits are waiting at the sequencer:
 // a hit's children leave on consecutive clocks and the next hit's first
 // child follows its predecessor's last without a gap. The front accepts a
-// hit every third clock at most, and holds each of its 32 credits for 3F+43
-// clocks (2F+37 without REFRACTION): back to back, a hit every
-// max(3, (3F+43)/32) clocks (BITS 12, 16: 3; 24: 3.3; 32: 4.1; without
+// hit every third clock at most, and holds each of its 32 credits for 3F+44
+// clocks (2F+38 without REFRACTION): back to back, a hit every
+// max(3, (3F+44)/32) clocks (BITS 12, 16: 3; 24: 3.3; 32: 4.1; without
 // REFRACTION 3 up to BITS 32), so hits with fewer children than that leave
 // gaps.
 // At most 32 hits wait between sequencer and output (their p, d, user).
@@ -334,7 +335,7 @@ module csgrt_spawn #(
     // the hit's d, flags and user wait for the sequencer; d also for FD.
     // A kind this build does not have is never requested: its flag is
     // ignored here (and below), and a simulation stops on it.
-    localparam QHW = 3 * B + FLW + UW;
+    localparam QHW = 3 * B + FLW + UW + 2;   // + the flags' two tests (below)
     wire [FLW-1:0] s_req   = {s_reflect_i, s_refract_i, s_lights_i, s_continue_i};
     wire [FLW-1:0] s_flags = s_req & FLAG_MASK;
 `ifndef SYNTHESIS
@@ -349,10 +350,18 @@ module csgrt_spawn #(
     wire           unused_qh_ready, unused_qh_valid;
     csgrt_fifo_block #(.WIDTH(QHW), .DEPTH(CTX)) u_q_hit (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qh_ready),
-        .data_i({s_user_i, s_flags, s_d_i}), .valid_o(unused_qh_valid), .ready_i(seq_load), .data_o(qh_data));
+        .data_i({at_most_one(s_flags), s_flags != {FLW{1'b0}}, s_user_i, s_flags, s_d_i}),
+        .valid_o(unused_qh_valid), .ready_i(seq_load), .data_o(qh_data));
     wire [3*B-1:0] qh_d     = qh_data[0 +: 3*B];
     wire [FLW-1:0] qh_flags = qh_data[3*B +: FLW] & FLAG_MASK;
     wire [UW-1:0]  qh_user  = qh_data[3*B+FLW +: UW];
+    // the hit's flags tested before they are queued, so that the tests do
+    // not follow the block RAM's slow read port (5.6 ns from the clock in
+    // nextpnr's model): a child at all (qh_any), at most one (qh_one,
+    // cur_last_q's next value at a load: RAM -> carry chain -> cur_last_q
+    // was csgrt_spawn's longest path out of context)
+    wire           qh_any   = qh_data[QHW-2];
+    wire           qh_one   = qh_data[QHW-1];
 
     wire [3*B-1:0] qnd_d;
     wire           qnd_pop;
@@ -447,9 +456,18 @@ module csgrt_spawn #(
                 .a_i(p_cc_q[i*B +: B]), .b_i(p_val_q), .valid_o(unused_v), .p_o(gp[i*GPW +: GPW]));
         end
     endgenerate
+    // The products are registered once more before the accumulation: the
+    // multiplier's tiles are summed in the fabric after their output
+    // registers (csgrt_mul), and that sum went on through the accumulation's
+    // adder into acc_q, csgrt_spawn's longest path out of context (a
+    // MULT18X18D's output -> two carry chains). The side data waits a clock
+    // more with it; the pipeline never stalls (ce 1), so every product
+    // meets its column a clock later and the sums are the same.
+    reg  [3*GPW-1:0] gp_q;
+    always @(posedge clk_i) gp_q <= gp;
     wire           g_valid;
     wire [B+1:0]   g_side;
-    csgrt_delay #(.WIDTH(B + 2), .STAGES(2)) u_dly_g (
+    csgrt_delay #(.WIDTH(B + 2), .STAGES(3)) u_dly_g (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(p_valid_q),
         .data_i({p_cc_q[3*B +: B], p_col_q}), .valid_o(g_valid), .data_o(g_side));
     wire [1:0]   g_col = g_side[1:0];
@@ -461,7 +479,7 @@ module csgrt_spawn #(
     reg               acc_done_q;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_acc
-            wire [GPW-1:0]  prod = gp[i*GPW +: GPW];
+            wire [GPW-1:0]  prod = gp_q[i*GPW +: GPW];
             wire [ACCW-1:0] base = (g_col == 2'd0) ? {{(ACCW-FC){1'b0}}, 1'b1, {(FC-1){1'b0}}}
                                                    : acc_q[i*ACCW +: ACCW];
             wire [ACCW-1:0] pc   = (g_col == i) ? {{(ACCW-B-F){g_pc[B-1]}}, g_pc, {F{1'b0}}}
@@ -895,7 +913,7 @@ module csgrt_spawn #(
     wire            free  = !cur_valid_q || (issue && last);
     wire            qo_ready;
     assign seq_load = free && front_valid && qo_ready;
-    wire            qo_push = seq_load && (qh_flags != {FLW{1'b0}});
+    wire            qo_push = seq_load && qh_any;
 
     reg [2:0]      kind;
     reg [LW-1:0]   light;
@@ -937,15 +955,14 @@ module csgrt_spawn #(
             at_most_one = (f & (f - {{(FLW-1){1'b0}}, 1'b1})) == {FLW{1'b0}};
         end
     endfunction
-    wire [FLW-1:0] pend_next = seq_load ? qh_flags : issue ? rest : cur_pend_q;
-    always @(posedge clk_i) cur_last_q <= at_most_one(pend_next);
+    always @(posedge clk_i) cur_last_q <= seq_load ? qh_one : at_most_one(issue ? rest : cur_pend_q);
     csgrt_check_same #(.WHAT("cur_last_q")) u_check_last (
         .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(cur_valid_q && cur_last_q),
         .orig_i(cur_valid_q && (rest == {FLW{1'b0}})));
 
     always @(posedge clk_i) begin
         if (!rst_ni) cur_valid_q <= 1'b0;
-        else if (seq_load) cur_valid_q <= (qh_flags != {FLW{1'b0}});
+        else if (seq_load) cur_valid_q <= qh_any;
         else if (issue && last) cur_valid_q <= 1'b0;
         if (seq_load) begin
             cur_pend_q <= qh_flags;
