@@ -335,7 +335,7 @@ module csgrt_spawn #(
     // the hit's d, flags and user wait for the sequencer; d also for FD.
     // A kind this build does not have is never requested: its flag is
     // ignored here (and below), and a simulation stops on it.
-    localparam QHW = 3 * B + FLW + UW + 2;   // + the flags' two tests (below)
+    localparam QHW = 3 * B + FLW + UW + 2 + FLW;   // + the flags' two tests and lowest flag (below)
     wire [FLW-1:0] s_req   = {s_reflect_i, s_refract_i, s_lights_i, s_continue_i};
     wire [FLW-1:0] s_flags = s_req & FLAG_MASK;
 `ifndef SYNTHESIS
@@ -350,7 +350,7 @@ module csgrt_spawn #(
     wire           unused_qh_ready, unused_qh_valid;
     csgrt_fifo_block #(.WIDTH(QHW), .DEPTH(CTX)) u_q_hit (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qh_ready),
-        .data_i({at_most_one(s_flags), s_flags != {FLW{1'b0}}, s_user_i, s_flags, s_d_i}),
+        .data_i({lowest(s_flags), at_most_one(s_flags), s_flags != {FLW{1'b0}}, s_user_i, s_flags, s_d_i}),
         .valid_o(unused_qh_valid), .ready_i(seq_load), .data_o(qh_data));
     wire [3*B-1:0] qh_d     = qh_data[0 +: 3*B];
     wire [FLW-1:0] qh_flags = qh_data[3*B +: FLW] & FLAG_MASK;
@@ -359,9 +359,11 @@ module csgrt_spawn #(
     // not follow the block RAM's slow read port (5.6 ns from the clock in
     // nextpnr's model): a child at all (qh_any), at most one (qh_one,
     // cur_last_q's next value at a load: RAM -> carry chain -> cur_last_q
-    // was csgrt_spawn's longest path out of context)
-    wire           qh_any   = qh_data[QHW-2];
-    wire           qh_one   = qh_data[QHW-1];
+    // was csgrt_spawn's longest path out of context), and the first child
+    // to issue (qh_pick, the lowest flag: pick_q's next value at a load)
+    wire           qh_any   = qh_data[3*B+FLW+UW];
+    wire           qh_one   = qh_data[3*B+FLW+UW+1];
+    wire [FLW-1:0] qh_pick  = qh_data[3*B+FLW+UW+2 +: FLW];
 
     wire [3*B-1:0] qnd_d;
     wire           qnd_pop;
@@ -901,7 +903,15 @@ module csgrt_spawn #(
 
     wire [FLW-1:0]  pend  = cur_pend_q & FLAG_MASK;   // the kinds this build has
     wire            issue = adv_c_q && cur_valid_q;
-    wire [FLW-1:0]  pick  = pend & (~pend + {{(FLW-1){1'b0}}, 1'b1});   // lowest pending
+    // the lowest pending kind, the child issued next: a register of its own
+    // (pick_q), loaded with the lowest flag of cur_pend_q's next value (at
+    // a load, qh_pick from the queue). Computed from cur_pend_q here, its
+    // carry chain went on through the light's choice and lv's subtraction
+    // into the child's registers: csgrt_spawn's longest path out of
+    // context once the queue's tests were off it. A simulation stops if
+    // the two differ.
+    reg  [FLW-1:0]  pick_q;
+    wire [FLW-1:0]  pick  = pick_q;
     wire [FLW-1:0]  rest  = pend & ~pick;
     // last = (rest == 0): at most one child pending. It is a register of its
     // own (cur_last_q), loaded with the test of cur_pend_q's next value:
@@ -948,6 +958,13 @@ module csgrt_spawn #(
         end
     endgenerate
 
+    function automatic [FLW-1:0] lowest(input [FLW-1:0] flags);   // the lowest flag of the kinds this build has
+        reg [FLW-1:0] f;
+        begin
+            f = flags & FLAG_MASK;
+            lowest = f & (~f + {{(FLW-1){1'b0}}, 1'b1});
+        end
+    endfunction
     function automatic at_most_one(input [FLW-1:0] flags);   // of the kinds this build has
         reg [FLW-1:0] f;
         begin
@@ -956,6 +973,10 @@ module csgrt_spawn #(
         end
     endfunction
     always @(posedge clk_i) cur_last_q <= seq_load ? qh_one : at_most_one(issue ? rest : cur_pend_q);
+    always @(posedge clk_i) pick_q <= seq_load ? qh_pick : lowest(issue ? rest : pend);
+    csgrt_check_same #(.WIDTH(FLW), .WHAT("pick_q")) u_check_pick (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(cur_valid_q ? pick_q : {FLW{1'b0}}),
+        .orig_i(cur_valid_q ? pend & (~pend + {{(FLW-1){1'b0}}, 1'b1}) : {FLW{1'b0}}));
     csgrt_check_same #(.WHAT("cur_last_q")) u_check_last (
         .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(cur_valid_q && cur_last_q),
         .orig_i(cur_valid_q && (rest == {FLW{1'b0}})));
