@@ -170,20 +170,21 @@
 // take most of the LUTs in every configuration.
 //
 // ---- Timing --------------------------------------------------------------------
-// Latency (no back-pressure, idle front): 5F+64 clocks from a hit's
-// acceptance to its first child (BITS 12: 109, 16: 129, 24: 169, 32: 209);
-// without REFRACTION 4F+58 (the sequencer takes the hit from the normal's
-// queue, F+6 clocks before S6 would have finished: BITS 12: 94, 16: 110,
-// 24: 142, 32: 174; 4F+56 before the queue moved to block RAM, whose head
-// comes one clock later, and one clock less before the gradient's products
-// were registered ahead of their accumulation, gp_q). The consumer (csgrt_raytree) takes children by
+// Latency (no back-pressure, idle front): 5F+65 clocks from a hit's
+// acceptance to its first child (BITS 12: 110, 16: 130, 24: 170, 32: 210);
+// without REFRACTION 4F+59 (the sequencer takes the hit from the normal's
+// queue, F+6 clocks before S6 would have finished: BITS 12: 95, 16: 111,
+// 24: 143, 32: 175; 4F+56 before the queue moved to block RAM, whose head
+// comes one clock later, and two clocks less before the gradient's
+// products and the normal's squares were registered ahead of their sums,
+// gp_q and ggp_q). The consumer (csgrt_raytree) takes children by
 // valid/ready and m_user_o and assumes no latency.
 // Throughput: one child per clock while hits are waiting at the sequencer:
 // a hit's children leave on consecutive clocks and the next hit's first
 // child follows its predecessor's last without a gap. The front accepts a
-// hit every third clock at most, and holds each of its 32 credits for 3F+44
-// clocks (2F+38 without REFRACTION): back to back, a hit every
-// max(3, (3F+44)/32) clocks (BITS 12, 16: 3; 24: 3.3; 32: 4.1; without
+// hit every third clock at most, and holds each of its 32 credits for 3F+45
+// clocks (2F+39 without REFRACTION): back to back, a hit every
+// max(3, (3F+45)/32) clocks (BITS 12, 16: 3; 24: 3.3; 32: 4.1; without
 // REFRACTION 3 up to BITS 32), so hits with fewer children than that leave
 // gaps.
 // At most 32 hits wait between sequencer and output (their p, d, user).
@@ -554,9 +555,14 @@ module csgrt_spawn #(
     csgrt_mul #(.A_WIDTH(GW), .B_WIDTH(GW)) u_mul_gg (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(gh_valid_q),
         .a_i(gh_gj), .b_i(gh_gj), .valid_o(unused_gg_v), .p_o(ggp));
+    // the squares registered before their sum, as the gradient's products
+    // (gp_q): the tiles' fabric sum and the sum's adder into gs_q were one
+    // clock, csgrt_spawn's longest path out of context after gp_q
+    reg  [GGW-1:0] ggp_q;
+    always @(posedge clk_i) ggp_q <= ggp;
     wire       gg_valid;
     wire [1:0] gg_col;
-    csgrt_delay #(.WIDTH(2), .STAGES(2)) u_dly_gg (
+    csgrt_delay #(.WIDTH(2), .STAGES(3)) u_dly_gg (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(gh_valid_q),
         .data_i(gh_ph_q), .valid_o(gg_valid), .data_o(gg_col));
     reg [2*SQ-1:0] gs_q;
@@ -566,7 +572,7 @@ module csgrt_spawn #(
         else gs_done_q <= gg_valid && (gg_col == 2'd2);
         // a square is not negative: zero-extended
         if (gg_valid)
-            gs_q <= ((gg_col == 2'd0) ? {(2*SQ){1'b0}} : gs_q) + {{(2*SQ-GGW){1'b0}}, ggp};
+            gs_q <= ((gg_col == 2'd0) ? {(2*SQ){1'b0}} : gs_q) + {{(2*SQ-GGW){1'b0}}, ggp_q};
     end
 
     // NQ: root = isqrt(sum g^2)
