@@ -369,7 +369,13 @@ module csgrt_spawn #(
     wire [3*B-1:0] qnd_d;
     wire           qnd_pop;
     wire           unused_qnd_ready, unused_qnd_valid;
-    csgrt_fifo_block #(.WIDTH(3 * B), .DEPTH(CTX)) u_q_nd (
+    // d waits for the normal (n . d) here. Its head in a fabric register
+    // (HEAD_REG 1, as u_q_g's below): the block RAM's read port (5.6 ns
+    // from the clock) went on through the axis choice into the n . d
+    // multiplier's input register, the longest path out of context once
+    // the products were registered before their sums; read long after the
+    // push, popped at a fixed phase (a register)
+    csgrt_fifo_block #(.WIDTH(3 * B), .DEPTH(CTX), .HEAD_REG(1)) u_q_nd (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qnd_ready),
         .data_i(s_d_i), .valid_o(unused_qnd_valid), .ready_i(qnd_pop), .data_o(qnd_d));
 
