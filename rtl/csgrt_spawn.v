@@ -349,7 +349,11 @@ module csgrt_spawn #(
 `endif
     wire [QHW-1:0] qh_data;
     wire           unused_qh_ready, unused_qh_valid;
-    csgrt_fifo_block #(.WIDTH(QHW), .DEPTH(CTX)) u_q_hit (
+    // the hit's head in a fabric register (HEAD_REG 1): read long after the
+    // push, by the sequencer's load (seq_load, a few LUTs of registers);
+    // the block RAM's read port went on into the output queue's write
+    // address (qh_any -> qo_push)
+    csgrt_fifo_block #(.WIDTH(QHW), .DEPTH(CTX), .HEAD_REG(1)) u_q_hit (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(accept), .ready_o(unused_qh_ready),
         .data_i({lowest(s_flags), at_most_one(s_flags), s_flags != {FLW{1'b0}}, s_user_i, s_flags, s_d_i}),
         .valid_o(unused_qh_valid), .ready_i(seq_load), .data_o(qh_data));
@@ -357,8 +361,8 @@ module csgrt_spawn #(
     wire [FLW-1:0] qh_flags = qh_data[3*B +: FLW] & FLAG_MASK;
     wire [UW-1:0]  qh_user  = qh_data[3*B+FLW +: UW];
     // the hit's flags tested before they are queued, so that the tests do
-    // not follow the block RAM's slow read port (5.6 ns from the clock in
-    // nextpnr's model): a child at all (qh_any), at most one (qh_one,
+    // not follow the queue's head (the block RAM's slow read port, 5.6 ns
+    // from the clock in nextpnr's model, before the head register): a child at all (qh_any), at most one (qh_one,
     // cur_last_q's next value at a load: RAM -> carry chain -> cur_last_q
     // was csgrt_spawn's longest path out of context), and the first child
     // to issue (qh_pick, the lowest flag: pick_q's next value at a load)
