@@ -361,11 +361,12 @@ module csgrt_spawn #(
     wire [FLW-1:0] qh_flags = qh_data[3*B +: FLW] & FLAG_MASK;
     wire [UW-1:0]  qh_user  = qh_data[3*B+FLW +: UW];
     // the hit's flags tested before they are queued, so that the tests do
-    // not follow the queue's head (the block RAM's slow read port, 5.6 ns
-    // from the clock in nextpnr's model, before the head register): a child at all (qh_any), at most one (qh_one,
-    // cur_last_q's next value at a load: RAM -> carry chain -> cur_last_q
-    // was csgrt_spawn's longest path out of context), and the first child
-    // to issue (qh_pick, the lowest flag: pick_q's next value at a load)
+    // not follow the queue's head (before the head register, the block
+    // RAM's slow read port: 5.6 ns from the clock in nextpnr's model): a
+    // child at all (qh_any), at most one (qh_one, cur_last_q's next value
+    // at a load: RAM -> carry chain -> cur_last_q was csgrt_spawn's
+    // longest path out of context), and the first child to issue
+    // (qh_pick, the lowest flag: pick_q's next value at a load)
     wire           qh_any   = qh_data[3*B+FLW+UW];
     wire           qh_one   = qh_data[3*B+FLW+UW+1];
     wire [FLW-1:0] qh_pick  = qh_data[3*B+FLW+UW+2 +: FLW];
