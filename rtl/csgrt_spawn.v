@@ -989,11 +989,13 @@ module csgrt_spawn #(
             at_most_one = (f & (f - {{(FLW-1){1'b0}}, 1'b1})) == {FLW{1'b0}};
         end
     endfunction
-    always @(posedge clk_i) cur_last_q <= seq_load ? qh_one : at_most_one(issue ? rest : cur_pend_q);
-    always @(posedge clk_i) pick_q <= seq_load ? qh_pick : lowest(issue ? rest : pend);
+    // the pending set's next value without a load (a load takes the queue's tests)
+    wire [FLW-1:0] pend_stay = issue ? rest : pend;
+    always @(posedge clk_i) cur_last_q <= seq_load ? qh_one : at_most_one(pend_stay);
+    always @(posedge clk_i) pick_q <= seq_load ? qh_pick : lowest(pend_stay);
     csgrt_check_same #(.WIDTH(FLW), .WHAT("pick_q")) u_check_pick (
         .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(cur_valid_q ? pick_q : {FLW{1'b0}}),
-        .orig_i(cur_valid_q ? pend & (~pend + {{(FLW-1){1'b0}}, 1'b1}) : {FLW{1'b0}}));
+        .orig_i(cur_valid_q ? lowest(pend) : {FLW{1'b0}}));
     csgrt_check_same #(.WHAT("cur_last_q")) u_check_last (
         .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(cur_valid_q && cur_last_q),
         .orig_i(cur_valid_q && (rest == {FLW{1'b0}})));

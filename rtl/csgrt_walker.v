@@ -203,8 +203,7 @@ module csgrt_walker #(
     // tc is BORDER c_from, c_to with c_from != c_to: the tree's register
     // (decoded here from tc, it was the first two LUT levels of the hit
     // decision into the output skid, the walker's longest path)
-    wire          t_border;
-    wire          border = t_border;
+    wire          border;
     wire [1:0]    unused_kind = tc[CW-1 -: 2];
     wire          live_tok = tv && !done_q[t_seq];
     reg           pend_q;                     // a hit waits for its surface (below)
@@ -285,7 +284,7 @@ module csgrt_walker #(
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce),
         .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
         .valid_i(issue), .flags_i(fl_cur), .flags_alt_i(gfl_q), .alt_i(probe), .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
-        .valid_o(tv), .class_o(tc), .border_o(t_border), .tag_o(tg));
+        .valid_o(tv), .class_o(tc), .border_o(border), .tag_o(tg));
 
     // ---- flags just before the hit --------------------------------------
     // The flags before the output token's crossing: its bank without the
