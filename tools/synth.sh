@@ -7,6 +7,7 @@
 #                  [--no-specular] [--sort-inserts 1|2] [--share-ii 3|1] [--units 1]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2] [--contexts 8]
+#                  [--placer heap|static] [--heap-beta 0.9] [--place-only | --route-only]
 #
 # Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
 # with their input and output registers inside the block (rtl/csgrt_mul.v);
@@ -28,6 +29,14 @@
 # YOSYS=yosys selects Debian's yosys instead; NEXTPNR=nextpnr-ecp5 a native
 # nextpnr.
 #
+# Place and route in two runs (a big build's placement takes an hour, its
+# routing hours): --place-only stops after placement and writes
+# OUT/placed.json with nextpnr's post-placement estimate in the report;
+# --route-only (implies --skip-synth) routes OUT/placed.json as it was placed,
+# with this run's --router and --freq (nextpnr keeps its settings in the
+# JSON and no longer knows the clock's net by its constraint, so the script
+# writes FREQ and the router into a copy first).
+#
 # Prints a summary (Fmax, LUT4, FF, MULT18X18D, BRAM, each used / available)
 # and writes it to OUT/report.json. Timing: nextpnr runs with
 # --timing-allow-fail so that the report and the critical path always come
@@ -41,7 +50,7 @@ ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
 EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
-LUT_TILE_MAX=36
+LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
@@ -63,6 +72,10 @@ while [ $# -gt 0 ]; do
         --stop-after-synth) STOP_SYNTH=1; shift ;;
         --skip-synth) SKIP_SYNTH=1; shift ;;      # reuse OUT/csgrt.json (same BITS/FREQ/BAUD)
         --router) ROUTER=$2; shift 2 ;;           # nextpnr's router (router2 diverged at BITS 12: docs/fpga.md)
+        --placer) PLACER=$2; shift 2 ;;           # nextpnr's placer: heap (default) or static
+        --heap-beta) HEAP_BETA=$2; shift 2 ;;     # HeAP's maximum placement density (nextpnr's default 0.9)
+        --place-only) STAGE=place; shift ;;       # stop after placement, write OUT/placed.json
+        --route-only) STAGE=route; SKIP_SYNTH=1; shift ;;   # route OUT/placed.json
         *) echo "synth.sh: unknown argument $1" >&2; exit 1 ;;
     esac
 done
@@ -159,8 +172,25 @@ rm -f "$OUT/csgrt.config" "$OUT/csgrt.bit" "$OUT/nextpnr_report.json"
 # does not fit only wastes time (nextpnr would fail much later), so the
 # script stops it there and reports the overflow.
 set +e
-"$NEXTPNR" --85k --package CABGA381 --speed 6 --json "$OUT/csgrt.json" \
-    --lpf rtl/board/ulx3s/ulx3s.lpf --lpf "$OUT/clock.lpf" --textcfg "$OUT/csgrt.config" \
+case "$STAGE" in
+    all)   PNR_IN=(--json "$OUT/csgrt.json" --lpf rtl/board/ulx3s/ulx3s.lpf --lpf "$OUT/clock.lpf" --textcfg "$OUT/csgrt.config") ;;
+    place) PNR_IN=(--json "$OUT/csgrt.json" --lpf rtl/board/ulx3s/ulx3s.lpf --lpf "$OUT/clock.lpf" --no-route --write "$OUT/placed.json") ;;
+    route) [ -f "$OUT/placed.json" ] || { echo "synth: --route-only needs $OUT/placed.json (from --place-only)" >&2; exit 1; }
+           python3 - "$OUT/placed.json" "$OUT/placed_route.json" "$FREQ" "$ROUTER" <<'PY'
+import json, sys
+src, dst, freq, router = sys.argv[1:]
+j = json.load(open(src))
+for m in j["modules"].values():
+    if "settings" in m:
+        m["settings"]["target_freq"] = f"{float(freq) * 1e6:.6f}"
+        m["settings"]["router"] = router
+json.dump(j, open(dst, "w"))
+PY
+           PNR_IN=(--json "$OUT/placed_route.json" --no-place --textcfg "$OUT/csgrt.config") ;;
+esac
+PNR_OPT=(--placer "$PLACER")
+[ -n "$HEAP_BETA" ] && PNR_OPT+=(--placer-heap-beta "$HEAP_BETA")
+"$NEXTPNR" --85k --package CABGA381 --speed 6 "${PNR_IN[@]}" "${PNR_OPT[@]}" \
     --report "$OUT/nextpnr_report.json" --timing-allow-fail --seed 1 --router "$ROUTER" > "$OUT/nextpnr.log" 2>&1 &
 PNR_PID=$!
 while kill -0 $PNR_PID 2>/dev/null; do
@@ -184,9 +214,9 @@ echo "synth: nextpnr done in $((T2 - T1)) s (exit $PNR_RC)"
 # ------------------------------------------------------------------ report
 set +e
 python3 - "$OUT" "$BITS" "$FREQ" "$BAUD" "$UART_DIV" "$PLL_MHZ" "$PNR_RC" "$((T1 - T0))" "$((T2 - T1))" \
-          "$EFFECTS" "$TREE_HEIGHT" "$MAX_LEAVES" "$LUT_TILE_MAX" <<'PY'
+          "$EFFECTS" "$TREE_HEIGHT" "$MAX_LEAVES" "$LUT_TILE_MAX" "$STAGE" <<'PY'
 import json, re, sys
-out, bits, freq, baud, udiv, pll_mhz, pnr_rc, t_syn, t_pnr, effects, height, leaves, tile_max = sys.argv[1:]
+out, bits, freq, baud, udiv, pll_mhz, pnr_rc, t_syn, t_pnr, effects, height, leaves, tile_max, stage = sys.argv[1:]
 freq = float(freq)
 stat = open(f"{out}/yosys_stat.txt").read()
 def ycount(cell):   # "  cell  count" (older yosys) or "  count  cell" (newer)
@@ -220,17 +250,21 @@ else:
     for m in re.finditer(r"^Info:\s+(\w+):\s+(\d+)/\s*(\d+)\s+\d+%", log, re.M):
         if m.group(1) in names:
             util[names[m.group(1)]] = {"used": int(m.group(2)), "available": int(m.group(3))}
+if not fmax:   # placement only (nextpnr's report has fmax after routing): the log's last estimate per clock
+    for m in re.finditer(r"Max frequency for clock '([^']+)': ([\d.]+) MHz \((?:PASS|FAIL) at ([\d.]+) MHz\)", log):
+        fmax[m.group(1)] = {"achieved": float(m.group(2)), "constraint": float(m.group(3))}
 rep["utilization"] = util
 rep["fmax_mhz"] = fmax
 core = None
-for k, v in fmax.items():
-    if k.endswith("clk") or "$glbnet$clk" in k or k == "clk":
+for k, v in fmax.items():   # the PLL's clk, after global promotion "$glbnet$clk" (not clk_25mhz)
+    if re.fullmatch(r"(\$glbnet\$)?clk(\$.*)?", k):
         core = v
 if core is None and fmax:
     core = max(fmax.values(), key=lambda v: v.get("constraint", 0))
 achieved = core["achieved"] if core else None
 rep["fmax_core_mhz"] = achieved
-rep["placed_and_routed"] = (int(pnr_rc) == 0 and pr is not None)
+rep["placed_and_routed"] = (int(pnr_rc) == 0 and pr is not None and stage != "place")
+rep["placed_only"] = (int(pnr_rc) == 0 and pr is not None and stage == "place")
 rep["timing_met"] = bool(achieved is not None and achieved >= freq and rep["placed_and_routed"])
 # the critical path of the core clock, as nextpnr prints it
 crit = ""
@@ -260,6 +294,11 @@ if errors:
         print("   hint: the multipliers are over; LUT_TILE_MAX=81 (--lut-tile-max 81) builds the small corner")
         print("         tiles of the wide products in the fabric instead (BITS 24 with shadows and reflection:")
         print("         170 -> 155 MULT18X18D for about 3 k LUT4; docs/fpga.md \"Multipliers\")")
+if rep["placed_only"]:
+    print(f"   placed, not routed: post-placement estimate {achieved:.2f} MHz at {freq:g} MHz requested;"
+          f" route it with --route-only --out {out}")
+    print(f"   report: {out}/report.json")
+    sys.exit(0)
 if achieved is not None:
     print(f"   Fmax (core clock): {achieved:.2f} MHz -> {'MET' if rep['timing_met'] else 'NOT MET'} at {freq:g} MHz")
 if not rep["timing_met"] and crit:
@@ -271,6 +310,7 @@ sys.exit(0 if rep["timing_met"] else (1 if not rep["placed_and_routed"] else 2))
 PY
 RC=$?
 set -e
+[ "$STAGE" = place ] && exit $RC   # no routing, no bitstream
 if [ $RC -eq 0 ] || { [ $RC -eq 2 ] && [ "$ALLOW_FAIL" = 1 ]; }; then
     "$ECPPACK" --compress "$OUT/csgrt.config" "$OUT/csgrt.bit" > "$OUT/ecppack.log" 2>&1 \
         || { echo "synth: ecppack failed"; cat "$OUT/ecppack.log"; exit 1; }
