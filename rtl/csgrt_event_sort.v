@@ -185,12 +185,19 @@ module csgrt_event_sort #(
     wire behind1 = ev1 && (range1_i == R_NEGINF || (range1_i == R_FINITE && t1_i[TW-1]));
     wire [DW-1:0] e0 = {t0_i[UW-1:0], tie_of(leaf_i, enter0_i, ties_regular_i), slot_i, enter0_i};
     wire [DW-1:0] e1 = {t1_i[UW-1:0], tie_of(leaf_i, enter1_i, ties_regular_i), slot_i, enter1_i};
-    wire          swap = ahead0 && ahead1 && (`CSGRT_KEY(e1) < `CSGRT_KEY(e0));
+    // The pair's order from t alone: a leaf's two events ahead never share
+    // a t (csgrt_isect drops such a pair, as the model's drop_equal_pair():
+    // two crossings of one surface at one t cross nothing), and both carry
+    // the same leaf, so the tie field cannot decide. The full key compare
+    // had the tie policy in front of it (the module's longest path out of
+    // context); u_check_swap stops a simulation in which the two differ.
+    wire          swap = ahead0 && ahead1 && (t1_i[UW-1:0] < t0_i[UW-1:0]);
 
     reg                     s1_valid_q;
     reg [1:0]               s1_n_q;        // events ahead: 0, 1 (a) or 2 (a < b)
     reg [DW-1:0]            s1_a_q, s1_b_q;
-    reg [H-1:0]             s1_slot_q;
+    reg [(1<<(H-H/2))-1:0]  s1_slo_q;      // the slot's low and high halves, one-hot (see onehot_lo)
+    reg [(1<<(H/2))-1:0]    s1_shi_q;
     reg                     s1_flag_q, s1_last_q;
     reg [PAYLOAD_WIDTH-1:0] s1_pay_q;
 
@@ -235,7 +242,43 @@ module csgrt_event_sort #(
     wire s1_done  = s1_adv && !s1_split;                   // the leaf leaves the stage
     wire in_ready = !s1_valid_q || ((!full_q || !busy_q) && !s1_split);
     wire flag_in;                          // the slot's origin flag
-    wire [NS-1:0] fix_we, fix_val;         // look-behind fix-up (SECONDARY)
+    // look-behind fix-up (SECONDARY), applied with a ray's last leaf: entry
+    // e sets the flag of its slot to !fix_ent[e] iff fix_lo's and fix_hi's
+    // one-hot halves of entry e both select the slot (see g_sec)
+    localparam HH  = H / 2;                // the slot's high half (0 bits when H = 1)
+    localparam HL  = H - HH;               // its low half
+    localparam NLO = 1 << HL;
+    localparam NHI = 1 << HH;
+    wire                      fix_en;
+    wire [LOOK_BEHIND*NLO-1:0] fix_lo;
+    wire [LOOK_BEHIND*NHI-1:0] fix_hi;
+    wire [LOOK_BEHIND-1:0]     fix_ent;
+    // a slot's low and high halves as one-hot codes (the high half's is 1
+    // when HH = 0)
+    function [NLO-1:0] onehot_lo(input [H-1:0] slot);
+        integer i;
+        for (i = 0; i < NLO; i = i + 1) onehot_lo[i] = {{(32-H){1'b0}}, slot} % NLO == i;
+    endfunction
+    function [NHI-1:0] onehot_hi(input [H-1:0] slot);
+        integer i;
+        for (i = 0; i < NHI; i = i + 1) onehot_hi[i] = {{(32-H){1'b0}}, slot} / NLO == i;
+    endfunction
+    // The input stage's slot as a mask of the flags, from its one-hot
+    // halves in registers: each flag's write condition is a 2-input AND.
+    // Written as fflags_q[s1_slot_q] <= .. (or with the mask decoded from
+    // a registered slot: the same), every flag's next value depended on the
+    // slot's 7 bits, and yosys/abc mapped that per flag instead of through
+    // one shared decoder: about 26 LUT4 per flag at H 7, with wide muxes
+    // (PFUMX, L6MUX21). Registered halves: the bank's logic 3,367 -> 1,660
+    // LUT4 out of context, with the fix-up below done the same way.
+    wire [NS-1:0] s1_sel;
+    wire [NS-1:0] base_flags = handover ? {NS{1'b0}} : fflags_q;
+    genvar hs;
+    generate
+        for (hs = 0; hs < NHI; hs = hs + 1) begin : g_sel
+            assign s1_sel[hs*NLO +: NLO] = s1_slo_q & {NLO{s1_shi_q[hs]}};
+        end
+    endgenerate
 
     // ---- insertion into the fill bank (emptied on a handover) ------------
     // Each cell learns whether it holds an event from its own bit of occ_q
@@ -376,46 +419,49 @@ module csgrt_event_sort #(
                 assign und[k] = &uk[k:0];      // and every more recent entry too
             end
 
-            // the fix-up travels with the ray's last leaf through the input stage
-            reg [LBK-1:0]   s1_und_q, s1_lbent_q;
-            reg [LBK*H-1:0] s1_lbslot_q;
+            // The fix-up travels with the ray's last leaf through the input
+            // stage, each entry's slot as two one-hot halves (the undone
+            // bit folded into the low one): a flag then tests two register
+            // bits per entry instead of comparing the entry's 7-bit slot
+            // (512 compares at H 7, mapped per flag as the write above).
+            reg [LBK*NLO-1:0] s1_lo_q;
+            reg [LBK*NHI-1:0] s1_hi_q;
+            reg [LBK-1:0]     s1_und_q, s1_lbent_q;
+            integer e;
             always @(posedge clk_i) begin
                 if (in_fire) acc_q <= last_i ? {LBK{1'b0}} : cp;
                 if (in_fire && last_i) begin
-                    s1_und_q    <= und;
-                    s1_lbslot_q <= info_lb_slot_i;
-                    s1_lbent_q  <= info_lb_entering_i;
+                    s1_und_q   <= und;
+                    s1_lbent_q <= info_lb_entering_i;
+                    for (e = 0; e < LBK; e = e + 1) begin
+                        s1_lo_q[e*NLO +: NLO] <= und[e] ? onehot_lo(info_lb_slot_i[e*H +: H]) : {NLO{1'b0}};
+                        s1_hi_q[e*NHI +: NHI] <= onehot_hi(info_lb_slot_i[e*H +: H]);
+                    end
                 end
                 if (!rst_ni) acc_q <= {LBK{1'b0}};
             end
-            // most recent entry first: an older undone entry of the same slot wins
-            reg [NS-1:0] we, val;
-            integer e;
-            always @* begin
-                we  = {NS{1'b0}};
-                val = {NS{1'b0}};
-                for (e = 0; e < LBK; e = e + 1)
-                    if (s1_und_q[e]) begin
-                        we[s1_lbslot_q[e*H +: H]]  = 1'b1;
-                        val[s1_lbslot_q[e*H +: H]] = !s1_lbent_q[e];
-                    end
-            end
-            assign fix_we  = (s1_done && s1_last_q) ? we : {NS{1'b0}};
-            assign fix_val = val;
+            // (the guard on an undone entry spares Verilator the loop over
+            // the slots with every ray: a primary ray undoes nothing)
+            assign fix_en  = s1_done && s1_last_q && |s1_und_q;
+            assign fix_lo  = s1_lo_q;
+            assign fix_hi  = s1_hi_q;
+            assign fix_ent = s1_lbent_q;
         end else begin : g_pri
             assign ready_o      = in_ready;
             assign info_ready_o = 1'b0;
             assign keep0   = 1'b1;
             assign keep1   = 1'b1;
             assign flag_in = flag_primary;
-            assign fix_we  = {NS{1'b0}};
-            assign fix_val = {NS{1'b0}};
+            assign fix_en  = 1'b0;
+            assign fix_lo  = {LOOK_BEHIND*NLO{1'b0}};
+            assign fix_hi  = {LOOK_BEHIND*NHI{1'b0}};
+            assign fix_ent = {LOOK_BEHIND{1'b0}};
             wire unused_sec = ^{cpos_i, info_valid_i, info_secondary_i, info_flags_i, info_tlimit_i,
                                 info_lb_count_i, info_lb_slot_i, info_lb_entering_i, info_lb_same_t_i};
         end
     endgenerate
 
-    integer fs;
+    integer fs, fe;
     always @(posedge clk_i) begin
         // input stage
         if (s1_adv && s1_split) begin   // a is in; b waits for the next clock
@@ -426,7 +472,8 @@ module csgrt_event_sort #(
             s1_n_q    <= {1'b0, ahead0} + {1'b0, ahead1};
             s1_a_q    <= (swap || !ahead0) ? e1 : e0;
             s1_b_q    <= swap ? e0 : e1;
-            s1_slot_q <= slot_i;
+            s1_slo_q  <= onehot_lo(slot_i);
+            s1_shi_q  <= onehot_hi(slot_i);
             s1_flag_q <= flag_in;
             s1_last_q <= last_i;
             s1_pay_q  <= payload_i;
@@ -444,16 +491,16 @@ module csgrt_event_sort #(
             if (s1_split || s1_n_q == 2'd1) occ_q <= occ_in1[N-1:0];
             else if (s1_n_q == 2'd2)        occ_q <= occ_in2[N-1:0];
             else                            occ_q <= base_occ;
-            fflags_q[s1_slot_q] <= s1_flag_q;
+            fflags_q <= (base_flags & ~s1_sel) | (s1_sel & {NS{s1_flag_q}});
             if (s1_last_q) fpay_q <= s1_pay_q;
         end
-        // the look-behind fix-up with a secondary ray's last leaf
-        // (fix_we is constant zero when SECONDARY = 0). The guard changes
-        // nothing in hardware; it spares Verilator a loop over every slot on
-        // every clock (fix_we is non-zero once per secondary ray)
-        if (|fix_we)
+        // the look-behind fix-up with a secondary ray's last leaf (fix_en is
+        // constant zero when SECONDARY = 0): entry e undoes the crossing in
+        // its slot; a later e is an older entry, and the older one wins
+        if (fix_en)
             for (fs = 0; fs < NS; fs = fs + 1)
-                if (fix_we[fs]) fflags_q[fs] <= fix_val[fs];
+                for (fe = 0; fe < LOOK_BEHIND; fe = fe + 1)
+                    if (fix_lo[fe*NLO + fs % NLO] && fix_hi[fe*NHI + fs / NLO]) fflags_q[fs] <= !fix_ent[fe];
         // drain bank
         if (handover) begin
             dcnt_q   <= fcnt_q;
@@ -507,6 +554,11 @@ module csgrt_event_sort #(
     csgrt_check_same #(.WIDTH(2), .WHAT("dne_q / dlast_q")) u_check_drain (
         .clk_i, .rst_ni, .copy_i({dne_q, dlast_q}),
         .orig_i({busy_q && dcnt_q != {NB{1'b0}}, busy_q ? dcnt_q == {{(NB-1){1'b0}}, 1'b1} : dlast_q}));
+
+    // the pair's order by the whole key, as the cells order events
+    csgrt_check_same #(.WHAT("swap (the pair ordered by t alone)")) u_check_swap (
+        .clk_i, .rst_ni, .copy_i(in_fire && swap),
+        .orig_i(in_fire && ahead0 && ahead1 && (`CSGRT_KEY(e1) < `CSGRT_KEY(e0))));
 
     generate
         if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2 || LOOK_BEHIND < 1 || (INSERTS != 1 && INSERTS != 2)) begin : g_bad_param
