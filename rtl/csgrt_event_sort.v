@@ -158,6 +158,10 @@ module csgrt_event_sort #(
     localparam H  = TREE_HEIGHT;
     localparam NS = 1 << H;
     localparam N  = 2 * MAX_LEAVES;            // MAX_EVENTS
+    localparam HH = H / 2;                     // a slot's high half (0 bits when H = 1)
+    localparam HL = H - HH;                    // its low half
+    localparam NLO = 1 << HL;                  // one-hot codes of the halves (onehot_lo, onehot_hi)
+    localparam NHI = 1 << HH;
     localparam NB = $clog2(N + 1);             // event count width
     localparam KW = UW + LB + 1;               // key {t, tie}
     localparam DW = KW + H + 1;                // stored event {key, slot, entering}
@@ -196,8 +200,8 @@ module csgrt_event_sort #(
     reg                     s1_valid_q;
     reg [1:0]               s1_n_q;        // events ahead: 0, 1 (a) or 2 (a < b)
     reg [DW-1:0]            s1_a_q, s1_b_q;
-    reg [(1<<(H-H/2))-1:0]  s1_slo_q;      // the slot's low and high halves, one-hot (see onehot_lo)
-    reg [(1<<(H/2))-1:0]    s1_shi_q;
+    reg [NLO-1:0]           s1_slo_q;      // the slot's low and high halves, one-hot (onehot_lo, onehot_hi)
+    reg [NHI-1:0]           s1_shi_q;
     reg                     s1_flag_q, s1_last_q;
     reg [PAYLOAD_WIDTH-1:0] s1_pay_q;
 
@@ -245,10 +249,6 @@ module csgrt_event_sort #(
     // look-behind fix-up (SECONDARY), applied with a ray's last leaf: entry
     // e sets the flag of its slot to !fix_ent[e] iff fix_lo's and fix_hi's
     // one-hot halves of entry e both select the slot (see g_sec)
-    localparam HH  = H / 2;                // the slot's high half (0 bits when H = 1)
-    localparam HL  = H - HH;               // its low half
-    localparam NLO = 1 << HL;
-    localparam NHI = 1 << HH;
     wire                      fix_en;
     wire [LOOK_BEHIND*NLO-1:0] fix_lo;
     wire [LOOK_BEHIND*NHI-1:0] fix_hi;
