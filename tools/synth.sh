@@ -33,9 +33,10 @@
 # routing hours): --place-only stops after placement and writes
 # OUT/placed.json with nextpnr's post-placement estimate in the report;
 # --route-only (implies --skip-synth) routes OUT/placed.json as it was placed,
-# with this run's --router and --freq (nextpnr keeps its settings in the
-# JSON and no longer knows the clock's net by its constraint, so the script
-# writes FREQ and the router into a copy first).
+# with this run's --router (nextpnr keeps its settings in the JSON and no
+# longer knows the clock's net by its constraint, so the script writes FREQ
+# and the router into a copy first). --freq must stay the one the netlist was
+# synthesized for (its PLL makes that clock): the script refuses another.
 #
 # Prints a summary (Fmax, LUT4, FF, MULT18X18D, BRAM, each used / available)
 # and writes it to OUT/report.json. Timing: nextpnr runs with
@@ -117,6 +118,14 @@ ECPPACK=${ECPPACK:-$VENV/bin/yowasp-ecppack}
 ECPPLL=${ECPPLL:-$VENV/bin/yowasp-ecppll}
 
 # ------------------------------------------------------- PLL and UART divider
+# The PLL and the UART divider are part of the netlist: placing or routing an
+# existing OUT/csgrt.json (--skip-synth, --route-only) at another FREQ would
+# time the design at one clock and write a bitstream that runs at the other.
+if [ "$SKIP_SYNTH" = 1 ] && [ -f "$OUT/synth_freq" ] && [ "$(cat "$OUT/synth_freq")" != "$FREQ" ]; then
+    echo "synth: $OUT/csgrt.json was synthesized for --freq $(cat "$OUT/synth_freq") (its PLL and UART divider);" \
+         "--freq $FREQ needs a new synthesis (leave out --skip-synth / --route-only)" >&2
+    exit 1
+fi
 # ecppll picks the dividers for 25 MHz -> FREQ; read them back from its Verilog.
 "$ECPPLL" -i 25 -o "$FREQ" -f "$OUT/pll.v" > "$OUT/ecppll.log" 2>&1 || { cat "$OUT/ecppll.log"; exit 1; }
 param() { sed -n "s/.*\.$1(\([0-9]*\)).*/\1/p" "$OUT/pll.v" | head -1; }
@@ -160,6 +169,7 @@ echo "synth: yosys synth_ecp5 (log $OUT/yosys.log)"
     synth_ecp5 -top csgrt_ulx3s -json $OUT/csgrt.json
     tee -o $OUT/yosys_stat.txt stat
 " > /dev/null || { echo "synth: yosys failed, see $OUT/yosys.log"; tail -20 "$OUT/yosys.log"; exit 1; }
+echo "$FREQ" > "$OUT/synth_freq"   # the clock the netlist's PLL makes (checked by --skip-synth)
 fi
 T1=$(date +%s)
 echo "synth: yosys done in $((T1 - T0)) s"
