@@ -11,7 +11,6 @@ Prints googletest-style lines so that tools/run_tests.sh counts its tests
 ("[  PASSED  ] N tests."); exit status 1 when a test fails.
 """
 import csv
-import importlib.util
 import math
 import os
 import subprocess
@@ -19,7 +18,7 @@ import sys
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-from gtest_report import check, run_suite  # noqa: E402
+from gtest_report import check, load_tool, run_suite  # noqa: E402
 TOOL = os.path.join(ROOT, "tools", "accuracy.py")
 BITS = 16
 SCENE = "scenes/paper/fig06_add_shared.pov"
@@ -27,13 +26,6 @@ SIM_W, SIM_H = 32, 24
 # fig06 at 16 bits, 64x48 measures 45.3 dB: 30 dB leaves room for scene edits,
 # and still fails on a broken comparison (a wrong image is far below it)
 MIN_PSNR = 30.0
-
-
-def load_tool():
-    spec = importlib.util.spec_from_file_location("accuracy", TOOL)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
 
 
 def sweep(tmp, *extra):
@@ -159,7 +151,7 @@ def test_report(ctx):
 
 
 def test_helpers(ctx):
-    acc = load_tool()
+    acc, _ = load_tool("accuracy")
     # the Pareto front keeps exactly the undominated points
     pts = [(1.0, 5.0, 12), (2.0, 1.0, 16), (2.0, 2.0, 20), (3.0, 0.0, 24), (4.0, 0.0, 28)]
     front = sorted(p[2] for p in acc.pareto(pts))

@@ -8,18 +8,13 @@ tool prints is known in advance. Needs no nextpnr.
 
 Prints googletest-style lines so that tools/run_tests.sh counts its tests.
 """
-import importlib.util
 import os
 import subprocess
 import sys
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
-TOOL = os.path.join(ROOT, "tools", "congestion.py")
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from gtest_report import check, run_suite  # noqa: E402
-spec = importlib.util.spec_from_file_location("congestion", TOOL)
-cg = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(cg)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gtest_report import check, load_tool, run_suite  # noqa: E402
+cg, TOOL = load_tool("congestion")
 
 NETS = [
     ("u_ctrl.u_core.g_unit[0].u_isect.g_p0_row[1].u_mul_u.p_q[3]", 7),

@@ -5,14 +5,28 @@ tools/run_tests.sh counts a binary's tests from googletest's summary lines
 (tools/accuracy_test.py, tools/logic_depth_test.py) print the same lines
 through run_suite, so that they are counted like the C++ ones.
 """
+import importlib.util
+import os
 import shutil
 import tempfile
 import time
 import traceback
 
+TOOLS = os.path.dirname(os.path.abspath(__file__))
+
 
 class Failure(Exception):
     """A check that did not hold: reported by its message, without a traceback."""
+
+
+def load_tool(name):
+    """tools/<name>.py loaded as a module (the tests call its functions), and its path
+    (they run it as a command too)."""
+    path = os.path.join(TOOLS, f"{name}.py")
+    spec = importlib.util.spec_from_file_location(name, path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod, path
 
 
 def check(cond, what):

@@ -8,19 +8,15 @@ delay model's constants written out in each test. Needs no yosys.
 
 Prints googletest-style lines so that tools/run_tests.sh counts its tests.
 """
-import importlib.util
 import json
 import os
 import subprocess
 import sys
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
-TOOL = os.path.join(ROOT, "tools", "logic_depth.py")
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-from gtest_report import Failure, check, run_suite  # noqa: E402
-spec = importlib.util.spec_from_file_location("logic_depth", TOOL)
-ld = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(ld)
+from gtest_report import Failure, check, load_tool, run_suite  # noqa: E402
+ld, TOOL = load_tool("logic_depth")
 
 CLK = 1
 
