@@ -29,14 +29,15 @@ DSP_ROWS = (10, 34, 58)   # tile rows of the LFE5U-85F's MULT18X18D sites
 def unit_of(net):
     """The csgrt unit a net belongs to: its path down to the first instance
     below u_ctrl.u_core that is not a generate scope."""
+    parts = net.split(".")
     key = []
-    for part in net.split("."):
+    for part in parts:
         key.append(part)
         if not (part.startswith("g_") or part in ("u_ctrl", "u_core")):
             break
     # a net of the core's own logic: yosys names it after a register or cell,
     # not an instance, so it stays as one unit
-    if len(key) == len(net.split(".")) and len(key) > 2:
+    if len(key) == len(parts) and len(key) > 2:
         return ".".join(key[:2]) + " (top-level logic)"
     return ".".join(key)
 
@@ -83,9 +84,10 @@ def main():
     total = sum(by_unit.values())
     print(f"router2 iteration {it}: {total} overused wires, counted per net")
     print(f"{'overused':>9} {'share':>6}  unit")
-    for unit, n in by_unit.most_common(a.top):
+    listed = by_unit.most_common(a.top)
+    for unit, n in listed:
         print(f"{n:9d} {100 * n / max(total, 1):5.1f}%  {unit}")
-    rest = total - sum(n for _, n in by_unit.most_common(a.top))
+    rest = total - sum(n for _, n in listed)
     if rest:
         print(f"{rest:9d} {100 * rest / max(total, 1):5.1f}%  (other)")
 

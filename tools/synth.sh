@@ -35,8 +35,9 @@
 # --route-only (implies --skip-synth) routes OUT/placed.json as it was placed,
 # with this run's --router (nextpnr keeps its settings in the JSON and no
 # longer knows the clock's net by its constraint, so the script writes FREQ
-# and the router into a copy first). --freq must stay the one the netlist was
-# synthesized for (its PLL makes that clock): the script refuses another.
+# and the router into a copy first). --freq, --baud and the core's settings
+# must stay those the netlist was synthesized with (its PLL makes that clock):
+# the script refuses others.
 # --heatmap (with --router router2) has nextpnr write its congestion heatmaps
 # per router iteration into OUT/heat; tools/congestion.py OUT/heat/h sums them
 # by unit and by band of tile rows (docs/fpga.md "Why it does not route").
@@ -74,7 +75,7 @@ while [ $# -gt 0 ]; do
         --out) OUT=$2; shift 2 ;;
         --allow-timing-fail) ALLOW_FAIL=1; shift ;;
         --stop-after-synth) STOP_SYNTH=1; shift ;;
-        --skip-synth) SKIP_SYNTH=1; shift ;;      # reuse OUT/csgrt.json (same BITS/FREQ/BAUD)
+        --skip-synth) SKIP_SYNTH=1; shift ;;      # reuse OUT/csgrt.json (same settings: checked)
         --router) ROUTER=$2; shift 2 ;;           # nextpnr's router (router2 diverged at BITS 12: docs/fpga.md)
         --heatmap) HEATMAP=1; shift ;;            # router2's congestion heatmaps into OUT/heat (tools/congestion.py)
         --placer) PLACER=$2; shift 2 ;;           # nextpnr's placer: heap (default) or static
@@ -123,14 +124,6 @@ ECPPACK=${ECPPACK:-$VENV/bin/yowasp-ecppack}
 ECPPLL=${ECPPLL:-$VENV/bin/yowasp-ecppll}
 
 # ------------------------------------------------------- PLL and UART divider
-# The PLL and the UART divider are part of the netlist: placing or routing an
-# existing OUT/csgrt.json (--skip-synth, --route-only) at another FREQ would
-# time the design at one clock and write a bitstream that runs at the other.
-if [ "$SKIP_SYNTH" = 1 ] && [ -f "$OUT/synth_freq" ] && [ "$(cat "$OUT/synth_freq")" != "$FREQ" ]; then
-    echo "synth: $OUT/csgrt.json was synthesized for --freq $(cat "$OUT/synth_freq") (its PLL and UART divider);" \
-         "--freq $FREQ needs a new synthesis (leave out --skip-synth / --route-only)" >&2
-    exit 1
-fi
 # ecppll picks the dividers for 25 MHz -> FREQ; read them back from its Verilog.
 "$ECPPLL" -i 25 -o "$FREQ" -f "$OUT/pll.v" > "$OUT/ecppll.log" 2>&1 || { cat "$OUT/ecppll.log"; exit 1; }
 param() { sed -n "s/.*\.$1(\([0-9]*\)).*/\1/p" "$OUT/pll.v" | head -1; }
@@ -139,6 +132,24 @@ PLL_MHZ=$(python3 -c "print(f'{25.0 / $CLKI_DIV * $CLKFB_DIV:.4f}')")
 CLK_HZ=$(python3 -c "print(round(25e6 / $CLKI_DIV * $CLKFB_DIV))")
 UART_DIV=$(python3 -c "print(max(4, round($CLK_HZ / $BAUD)))")
 BAUD_ERR=$(python3 -c "print(f'{($CLK_HZ / $UART_DIV / $BAUD - 1) * 100:+.2f}')")
+PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS -set CONTEXTS $CONTEXTS
+        -set CLK_HZ $CLK_HZ -set PLL_CLKI_DIV $CLKI_DIV -set PLL_CLKFB_DIV $CLKFB_DIV
+        -set PLL_CLKOP_DIV $CLKOP_DIV -set PLL_CLKOP_CPHASE $CLKOP_CPHASE -set UART_DIV $UART_DIV"
+PARAMS=$(echo $PARAMS)   # one line for yosys
+# Everything the netlist is built from besides the sources: csgrt_top's
+# parameters, the PLL's dividers and the UART divider (both from FREQ and
+# BAUD) and the defines. Placing or routing an existing OUT/csgrt.json
+# (--skip-synth, --route-only) with other settings would label, time or
+# pack a netlist that is not the one asked for (at another FREQ: timed at one
+# clock, a bitstream running at the other), so the script refuses.
+NETLIST_KEY="$DEFS $PARAMS"
+if [ "$SKIP_SYNTH" = 1 ] && [ -f "$OUT/netlist_params" ] && [ "$(cat "$OUT/netlist_params")" != "$NETLIST_KEY" ]; then
+    echo "synth: $OUT/csgrt.json was synthesized with other settings than this run's (needs a new synthesis:" \
+         "leave out --skip-synth / --route-only):" >&2
+    echo "  synthesized: $(cat "$OUT/netlist_params")" >&2
+    echo "  this run:    $NETLIST_KEY" >&2
+    exit 1
+fi
 echo "synth: BITS=$BITS, TREE_HEIGHT=$TREE_HEIGHT, MAX_LEAVES=$MAX_LEAVES, EFFECTS=$EFFECTS, core clock $PLL_MHZ MHz (PLL 25 MHz / $CLKI_DIV * $CLKFB_DIV, VCO / $CLKOP_DIV)," \
      "UART $BAUD baud = $UART_DIV clocks per bit ($BAUD_ERR %)"
 cat > "$OUT/clock.lpf" <<LPF
@@ -150,10 +161,6 @@ LPF
 # SYNTH_CORE_SRC: other core sources (a test hook: a stub csgrt_top checks the flow in a minute)
 SRC="${SYNTH_CORE_SRC:-$(echo rtl/*.v)} rtl/board/csgrt_uart_rx.v rtl/board/csgrt_uart_tx.v rtl/board/csgrt_board_ctrl.v rtl/board/ulx3s/csgrt_ulx3s.v"
 T0=$(date +%s)
-PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS -set CONTEXTS $CONTEXTS
-        -set CLK_HZ $CLK_HZ -set PLL_CLKI_DIV $CLKI_DIV -set PLL_CLKFB_DIV $CLKFB_DIV
-        -set PLL_CLKOP_DIV $CLKOP_DIV -set PLL_CLKOP_CPHASE $CLKOP_CPHASE -set UART_DIV $UART_DIV"
-PARAMS=$(echo $PARAMS)   # one line for yosys
 if [ "$PER_MODULE" = 1 ]; then
     echo "synth: yosys synth_ecp5 -noflatten, area per module (log $OUT/yosys_hier.log)"
     "$YOSYS" -l "$OUT/yosys_hier.log" -q -p "
@@ -174,7 +181,7 @@ echo "synth: yosys synth_ecp5 (log $OUT/yosys.log)"
     synth_ecp5 -top csgrt_ulx3s -json $OUT/csgrt.json
     tee -o $OUT/yosys_stat.txt stat
 " > /dev/null || { echo "synth: yosys failed, see $OUT/yosys.log"; tail -20 "$OUT/yosys.log"; exit 1; }
-echo "$FREQ" > "$OUT/synth_freq"   # the clock the netlist's PLL makes (checked by --skip-synth)
+echo "$NETLIST_KEY" > "$OUT/netlist_params"   # what this netlist was built from (checked by --skip-synth)
 fi
 T1=$(date +%s)
 echo "synth: yosys done in $((T1 - T0)) s"
