@@ -8,6 +8,7 @@
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2] [--contexts 8]
 #                  [--placer heap|static] [--heap-beta 0.9] [--place-only | --route-only] [--heatmap]
+#                  [--alt-weights]
 #
 # Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
 # with their input and output registers inside the block (rtl/csgrt_mul.v);
@@ -41,6 +42,8 @@
 # --heatmap (with --router router2) has nextpnr write its congestion heatmaps
 # per router iteration into OUT/heat; tools/congestion.py OUT/heat/h sums them
 # by unit and by band of tile rows (docs/fpga.md "Why it does not route").
+# --alt-weights (with --router router2): nextpnr's --router2-alt-weights,
+# router2's alternative cost weights.
 #
 # Prints a summary (Fmax, LUT4, FF, MULT18X18D, BRAM, each used / available)
 # and writes it to OUT/report.json. Timing: nextpnr runs with
@@ -55,7 +58,7 @@ ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
 EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
-LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0
+LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0 ALT_WEIGHTS=0
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
@@ -78,6 +81,7 @@ while [ $# -gt 0 ]; do
         --skip-synth) SKIP_SYNTH=1; shift ;;      # reuse OUT/csgrt.json (same settings: checked)
         --router) ROUTER=$2; shift 2 ;;           # nextpnr's router (router2 diverged at BITS 12: docs/fpga.md)
         --heatmap) HEATMAP=1; shift ;;            # router2's congestion heatmaps into OUT/heat (tools/congestion.py)
+        --alt-weights) ALT_WEIGHTS=1; shift ;;    # router2's alternative weights (--router2-alt-weights)
         --placer) PLACER=$2; shift 2 ;;           # nextpnr's placer: heap (default) or static
         --heap-beta) HEAP_BETA=$2; shift 2 ;;     # HeAP's maximum placement density (nextpnr's default 0.9)
         --place-only) STAGE=place; shift ;;       # stop after placement, write OUT/placed.json
@@ -109,6 +113,7 @@ case "$LUT_TILE_MAX" in
     *) DEFS="$DEFS -DCSGRT_LUT_TILE_MAX=$LUT_TILE_MAX"; EFFECTS="$EFFECTS,tile$LUT_TILE_MAX" ;;
 esac
 [ "$HEATMAP" = 0 ] || [ "$ROUTER" = router2 ] || { echo "synth.sh: --heatmap needs --router router2 (router1 writes none)" >&2; exit 1; }
+[ "$ALT_WEIGHTS" = 0 ] || [ "$ROUTER" = router2 ] || { echo "synth.sh: --alt-weights needs --router router2" >&2; exit 1; }
 mkdir -p "$OUT"
 
 # ------------------------------------------------------------------ tools
@@ -216,6 +221,7 @@ if [ "$HEATMAP" = 1 ]; then
     mkdir -p "$OUT/heat"
     PNR_OPT+=(--router2-heatmap "$OUT/heat/h")   # per iteration: tools/congestion.py $OUT/heat/h
 fi
+[ "$ALT_WEIGHTS" = 1 ] && PNR_OPT+=(--router2-alt-weights)
 "$NEXTPNR" --85k --package CABGA381 --speed 6 "${PNR_IN[@]}" "${PNR_OPT[@]}" \
     --report "$OUT/nextpnr_report.json" --timing-allow-fail --seed 1 --router "$ROUTER" > "$OUT/nextpnr.log" 2>&1 &
 PNR_PID=$!
