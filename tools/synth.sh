@@ -4,7 +4,7 @@
 #
 #   tools/synth.sh [--bits 24] [--freq 100] [--baud 3000000] [--out out/synth]
 #                  [--tree-height 8] [--max-leaves 64] [--effects none|all|shadows,reflection,refraction]
-#                  [--no-specular] [--sort-inserts 1|2] [--share-ii 3|1] [--units 1]
+#                  [--no-specular] [--sort-inserts 1|2] [--share-ii 3|1] [--units 1] [--max-lights 8]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2] [--contexts 8]
 #                  [--placer heap|static] [--heap-beta 0.9] [--place-only | --route-only] [--heatmap]
@@ -57,7 +57,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
-EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
+EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 MAX_LIGHTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
 LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0 ALT_WEIGHTS=0
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -72,6 +72,7 @@ while [ $# -gt 0 ]; do
         --share-ii) SHARE_II=$2; shift 2 ;;       # csgrt_top's SHARE_II (clocks per item of the time-shared blocks)
         --units) UNITS=$2; shift 2 ;;             # csgrt_top's NUM_UNITS (intersection lanes)
         --contexts) CONTEXTS=$2; shift 2 ;;       # csgrt_top's CONTEXTS (pixels in flight in the ray tree)
+        --max-lights) MAX_LIGHTS=$2; shift 2 ;;   # csgrt_top's MAX_LIGHTS (a scene with more is refused: status 4)
         --per-module) PER_MODULE=1; shift ;;
         --behavioural-mul) DEFS="-DSYNTHESIS"; shift ;;
         --lut-tile-max) LUT_TILE_MAX=$2; shift 2 ;;   # csgrt_mul's LUT_TILE_MAX (fabric tiles up to this product of chunk widths)
@@ -107,6 +108,13 @@ case "$SORT_INSERTS" in 1) ;; 2) EFFECTS="$EFFECTS,sort2" ;; *) echo "synth.sh: 
 case "$SHARE_II" in 3) ;; 1) EFFECTS="$EFFECTS,share1" ;; *) echo "synth.sh: --share-ii takes 3 or 1" >&2; exit 1 ;; esac
 case "$UNITS" in 1) ;; [2-9]) EFFECTS="$EFFECTS,units$UNITS" ;; *) echo "synth.sh: --units takes 1 to 9" >&2; exit 1 ;; esac
 case "$CONTEXTS" in 8) ;; 2|4|16|32|64) EFFECTS="$EFFECTS,ctx$CONTEXTS" ;; *) echo "synth.sh: --contexts takes a power of two from 2 to 64" >&2; exit 1 ;; esac
+# MAX_LIGHTS: every light's position and colour is a register of static
+# configuration wired to the shading, csgrt_spawn and the ray tree, which
+# also keeps a colour per light and context; a build for fewer lights has
+# fewer of those wires. Only a non-default count is passed to yosys, so
+# that the netlists of earlier runs keep their recorded settings.
+LIGHTS_PARAM=""
+case "$MAX_LIGHTS" in 8) ;; [1-7]) EFFECTS="$EFFECTS,lights$MAX_LIGHTS"; LIGHTS_PARAM="-set MAX_LIGHTS $MAX_LIGHTS" ;; *) echo "synth.sh: --max-lights takes 1 to 8" >&2; exit 1 ;; esac
 case "$LUT_TILE_MAX" in
     36) ;;
     *[!0-9]*|'') echo "synth.sh: --lut-tile-max takes a number of bits squared (36, 81, ...)" >&2; exit 1 ;;
@@ -137,7 +145,7 @@ PLL_MHZ=$(python3 -c "print(f'{25.0 / $CLKI_DIV * $CLKFB_DIV:.4f}')")
 CLK_HZ=$(python3 -c "print(round(25e6 / $CLKI_DIV * $CLKFB_DIV))")
 UART_DIV=$(python3 -c "print(max(4, round($CLK_HZ / $BAUD)))")
 BAUD_ERR=$(python3 -c "print(f'{($CLK_HZ / $UART_DIV / $BAUD - 1) * 100:+.2f}')")
-PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS -set CONTEXTS $CONTEXTS
+PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS -set CONTEXTS $CONTEXTS $LIGHTS_PARAM
         -set CLK_HZ $CLK_HZ -set PLL_CLKI_DIV $CLKI_DIV -set PLL_CLKFB_DIV $CLKFB_DIV
         -set PLL_CLKOP_DIV $CLKOP_DIV -set PLL_CLKOP_CPHASE $CLKOP_CPHASE -set UART_DIV $UART_DIV"
 PARAMS=$(echo $PARAMS)   # one line for yosys

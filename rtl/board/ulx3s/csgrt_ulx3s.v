@@ -24,6 +24,7 @@ module csgrt_ulx3s #(
     parameter SHARE_II      = 3,          // the shading's clocks per item, 3 or 1 (synth.sh --share-ii)
     parameter NUM_UNITS     = 1,          // intersection lanes (synth.sh --units)
     parameter CONTEXTS      = 8,          // pixels in flight in the ray tree (synth.sh --contexts)
+    parameter MAX_LIGHTS    = 8,          // point lights a scene may have (synth.sh --max-lights)
     /* verilator lint_off UNUSEDPARAM */
     parameter CLK_HZ        = 100000000,  // core clock the PLL makes (documentation, idle time)
     /* verilator lint_on UNUSEDPARAM */
@@ -93,7 +94,7 @@ module csgrt_ulx3s #(
         .BITS (BITS), .MAX_LEAVES (MAX_LEAVES), .TREE_HEIGHT (TREE_HEIGHT),
         .SHADOWS (SHADOWS), .REFLECTION (REFLECTION), .REFRACTION (REFRACTION), .SPECULAR (SPECULAR),
         .SORT_INSERTS (SORT_INSERTS), .SHARE_II (SHARE_II), .NUM_UNITS (NUM_UNITS),
-        .CONTEXTS (CONTEXTS), .IDLE_CLOCKS (IDLE_CLOCKS), .LUT_FILE (LUT_FILE)
+        .CONTEXTS (CONTEXTS), .MAX_LIGHTS (MAX_LIGHTS), .IDLE_CLOCKS (IDLE_CLOCKS), .LUT_FILE (LUT_FILE)
     ) u_ctrl (
         .clk_i (clk), .rst_ni (rst_n),
         .rx_valid_i (rx_valid), .rx_data_i (rx_data),
