@@ -163,6 +163,9 @@ CONTEXTS ?= 8
 # refuses a scene with more (status 4); another number than 8 gets the
 # suffix lN
 MAX_LIGHTS ?= 8
+ifeq ($(filter 1 2 3 4 5 6 7 8,$(MAX_LIGHTS)),)
+$(error MAX_LIGHTS takes 1 to 8, not '$(MAX_LIGHTS)')
+endif
 # TRACE=1 builds a binary of its own with waveform tracing (suffix t): a
 # build Verilated with --trace-fst runs about 15 % slower even when it
 # writes no waveform (quadrics 64x48 B24: 1.13 s against 1.01 s, median of 5)
