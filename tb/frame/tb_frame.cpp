@@ -99,6 +99,13 @@ FrameResult run_frame(const std::vector<uint32_t>& words, TiePolicy ties, int re
     return r;
 }
 
+// the loader's status for an image on a freshly reset core (0: loaded)
+int load_status(const std::vector<uint32_t>& words) {
+    csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
+    sim.reset();
+    return sim.load(words);
+}
+
 void expect_pixel_exact(const std::string& name, const Scene& scene, int w, int h, TiePolicy ties,
                         int ready_percent = 100) {
     const FrameResult r = run_frame(compile_words(scene, w, h), ties, ready_percent);
@@ -162,9 +169,7 @@ TEST(Frame, ShadowlessStudio) {
     if (int(s.lights.size()) <= FRAME_MAX_LIGHTS) {
         expect_pixel_exact("studio", s, 40, 30, TiePolicy::Paper);
     } else {
-        csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
-        sim.reset();
-        EXPECT_EQ(sim.load(compile_words(s, 8, 6)), 4) << "3 lights on a build for " << FRAME_MAX_LIGHTS;
+        EXPECT_EQ(load_status(compile_words(s, 8, 6)), 4) << "3 lights on a build for " << FRAME_MAX_LIGHTS;
     }
 }
 
@@ -178,9 +183,7 @@ TEST(Frame, LightLimitOfTheBuild) {
     while (int(s.lights.size()) > FRAME_MAX_LIGHTS) s.lights.pop_back();
     expect_pixel_exact("quadrics, MAX_LIGHTS lights", s, 32, 24, TiePolicy::Regular);
     s.lights.push_back(s.lights[0]);
-    csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
-    sim.reset();
-    EXPECT_EQ(sim.load(compile_words(s, 8, 6)), 4) << "one light more than MAX_LIGHTS " << FRAME_MAX_LIGHTS;
+    EXPECT_EQ(load_status(compile_words(s, 8, 6)), 4) << "one light more than MAX_LIGHTS " << FRAME_MAX_LIGHTS;
 }
 #endif
 
@@ -196,9 +199,7 @@ TEST(Frame, RandomBackPressureLosesNothing) {
 TEST(Frame, RefusesAnImageForAnotherConfiguration) {
     std::vector<uint32_t> words = compile_words(scene_file("basic"), 8, 6);
     words[H_BITS] = FRAME_BITS == 24 ? 16 : 24;   // compiled for another width
-    csgrt_sim::TopSim<Vcsgrt_top> sim(FRAME_BITS, kLeafBits, kTreeHeight, FRAME_UNITS);
-    sim.reset();
-    EXPECT_EQ(sim.load(words), 2);
+    EXPECT_EQ(load_status(words), 2);
 }
 
 #if FRAME_SHADOWS || FRAME_REFLECTION
