@@ -353,7 +353,13 @@ module csgrt_raytree #(
     reg                 spq_push;
     reg  [SPQ_W-1:0]    spq_data;
     wire                spq_room;
-    csgrt_fifo_block #(.WIDTH(SPQ_W), .DEPTH(2 * P)) u_spawn_q (
+    // the head in a fabric register (HEAD_REG 1): csgrt_spawn tests the
+    // request's child flags (lowest, at most one) on the way into its hit
+    // queue, and the block RAM's read port (5.8 ns from the clock) in front
+    // of that carry chain and the route across was the longest path of the
+    // routed BITS 16 H 5 effects build (docs/fpga.md). csgrt_spawn's ready
+    // is a function of its registers, as HEAD_REG 1 asks.
+    csgrt_fifo_block #(.WIDTH(SPQ_W), .DEPTH(2 * P), .HEAD_REG(1)) u_spawn_q (
         .clk_i, .rst_ni, .valid_i (spq_push), .ready_o (spq_room),
         .data_i (spq_data),
         .valid_o (sp_valid_o), .ready_i (sp_ready_i),
