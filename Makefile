@@ -249,7 +249,7 @@ $(BOARD_BIN): $(RTL_SRC) $(BOARD_SRC) tb/board/tb_board.cpp $(BUILD)/libcsgrt.a 
 
 # ------------------------------------------------------------------ checks
 test: deps $(BUILD)/csgrt $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN) accuracy-smoke
-	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN) tools/accuracy_test.py tools/logic_depth_test.py tools/congestion_test.py
+	@tools/run_tests.sh $(BUILD)/model_tests $(TB_BINS) $(FRAME_BINS) $(BOARD_BIN) tools/accuracy_test.py tools/logic_depth_test.py tools/congestion_test.py tools/synth_args_test.py
 
 lint: deps lint-rtl
 

@@ -2,7 +2,8 @@
 
 tools/run_tests.sh counts a binary's tests from googletest's summary lines
 ("[  PASSED  ] N tests.", "[  FAILED  ] N tests"); the Python tests
-(tools/accuracy_test.py, tools/logic_depth_test.py, tools/congestion_test.py) print the same lines
+(tools/accuracy_test.py, tools/logic_depth_test.py, tools/congestion_test.py,
+tools/synth_args_test.py) print the same lines
 through run_suite, so that they are counted like the C++ ones.
 """
 import importlib.util

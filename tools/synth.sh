@@ -8,7 +8,7 @@
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2] [--contexts 8]
 #                  [--placer heap|static] [--heap-beta 0.9] [--place-only | --route-only] [--heatmap]
-#                  [--alt-weights]
+#                  [--alt-weights] [--dry-run]
 #
 # Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
 # with their input and output registers inside the block (rtl/csgrt_mul.v);
@@ -44,6 +44,9 @@
 # by unit and by band of tile rows (docs/fpga.md "Why it does not route").
 # --alt-weights (with --router router2): nextpnr's --router2-alt-weights,
 # router2's alternative cost weights.
+# --dry-run checks the arguments, prints the core's settings as they would
+# be built (e.g. the default --max-leaves of a --tree-height) and exits
+# before any tool runs.
 #
 # Prints a summary (Fmax, LUT4, FF, MULT18X18D, BRAM, each used / available)
 # and writes it to OUT/report.json. Timing: nextpnr runs with
@@ -56,16 +59,16 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
 
-BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES=64 ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
+BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES="" ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
 EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 MAX_LIGHTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
-LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0 ALT_WEIGHTS=0
+LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0 ALT_WEIGHTS=0 DRY_RUN=0
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
         --freq) FREQ=$2; shift 2 ;;
         --baud) BAUD=$2; shift 2 ;;
         --tree-height) TREE_HEIGHT=$2; shift 2 ;;   # csgrt_top's TREE_HEIGHT (scenes: csgrt compile --tree-height)
-        --max-leaves) MAX_LEAVES=$2; shift 2 ;;
+        --max-leaves) MAX_LEAVES=$2; shift 2 ;;   # csgrt_top's MAX_LEAVES (default: 2^(height-1), at most 64)
         --effects) EFFECTS=$2; shift 2 ;;          # csgrt_top's effect units (SHADOWS, REFLECTION, REFRACTION)
         --no-specular) SPECULAR=0; shift ;;       # csgrt_top's SPECULAR = 0: no phong highlights
         --sort-inserts) SORT_INSERTS=$2; shift 2 ;;   # csgrt_top's SORT_INSERTS (the event sorter's insertions per clock)
@@ -87,9 +90,24 @@ while [ $# -gt 0 ]; do
         --heap-beta) HEAP_BETA=$2; shift 2 ;;     # HeAP's maximum placement density (nextpnr's default 0.9)
         --place-only) STAGE=place; shift ;;       # stop after placement, write OUT/placed.json
         --route-only) STAGE=route; SKIP_SYNTH=1; shift ;;   # route OUT/placed.json
+        --dry-run) DRY_RUN=1; shift ;;            # check the arguments, print the settings, run nothing
         *) echo "synth.sh: unknown argument $1" >&2; exit 1 ;;
     esac
 done
+# the leaf store: a tree of height H has 2^H leaf slots, so more leaves
+# than that could never be laid out; the default is half the slots (room
+# for an unbalanced tree, as the Makefile's H 7 / 64 leaves), at most 64
+case "$TREE_HEIGHT" in ''|*[!0-9]*) echo "synth.sh: --tree-height must be a number, not '$TREE_HEIGHT'" >&2; exit 1 ;; esac
+if [ "$TREE_HEIGHT" -lt 1 ] || [ "$TREE_HEIGHT" -gt 10 ]; then
+    echo "synth.sh: --tree-height $TREE_HEIGHT is outside 1..10" >&2; exit 1
+fi
+if [ -z "$MAX_LEAVES" ]; then
+    MAX_LEAVES=$(( (1 << (TREE_HEIGHT - 1)) < 64 ? (1 << (TREE_HEIGHT - 1)) : 64 ))
+fi
+case "$MAX_LEAVES" in ''|*[!0-9]*) echo "synth.sh: --max-leaves must be a number, not '$MAX_LEAVES'" >&2; exit 1 ;; esac
+if [ "$MAX_LEAVES" -lt 2 ] || [ "$MAX_LEAVES" -gt $(( 1 << TREE_HEIGHT )) ]; then
+    echo "synth.sh: --max-leaves $MAX_LEAVES does not fit a tree of height $TREE_HEIGHT (2 to $(( 1 << TREE_HEIGHT )) leaf slots)" >&2; exit 1
+fi
 # a comma-separated list: shadows,reflection is the issue's target configuration
 SHADOWS=0 REFLECTION=0 REFRACTION=0
 for fx in ${EFFECTS//,/ }; do
@@ -122,6 +140,12 @@ case "$LUT_TILE_MAX" in
 esac
 [ "$HEATMAP" = 0 ] || [ "$ROUTER" = router2 ] || { echo "synth.sh: --heatmap needs --router router2 (router1 writes none)" >&2; exit 1; }
 [ "$ALT_WEIGHTS" = 0 ] || [ "$ROUTER" = router2 ] || { echo "synth.sh: --alt-weights needs --router router2" >&2; exit 1; }
+if [ "$DRY_RUN" = 1 ]; then
+    echo "synth.sh: BITS=$BITS TREE_HEIGHT=$TREE_HEIGHT MAX_LEAVES=$MAX_LEAVES MAX_LIGHTS=$MAX_LIGHTS" \
+         "SHADOWS=$SHADOWS REFLECTION=$REFLECTION REFRACTION=$REFRACTION SPECULAR=$SPECULAR" \
+         "NUM_UNITS=$UNITS CONTEXTS=$CONTEXTS FREQ=$FREQ ROUTER=$ROUTER STAGE=$STAGE OUT=$OUT"
+    exit 0
+fi
 mkdir -p "$OUT"
 
 # ------------------------------------------------------------------ tools
