@@ -32,9 +32,20 @@ scene_name = $(basename $(notdir $(SCENE)))
 
 # The hardware configuration that make sim and the frame tests build
 # (csgrt_top's parameters; the scene compiler checks scenes against them).
-HW_MAX_LEAVES  := 64
-HW_LEAF_BITS   := 6
-HW_TREE_HEIGHT := 8
+# TREE_HEIGHT=H (make sim and make synth) builds the classification tree
+# for trees of height H (2^H leaf slots) with a leaf store of 2^(H-1)
+# leaves, at most 64, as tools/synth.sh does: TREE_HEIGHT=5 simulates the
+# 16-leaf build routed in docs/fpga.md. make sim's binary for another
+# height than 8 gets the suffix hH.
+TREE_HEIGHT ?=
+ifneq ($(TREE_HEIGHT),)
+ifeq ($(filter 1 2 3 4 5 6 7 8 9 10,$(TREE_HEIGHT)),)
+$(error TREE_HEIGHT takes 1 to 10, not '$(TREE_HEIGHT)')
+endif
+endif
+HW_TREE_HEIGHT := $(or $(TREE_HEIGHT),8)
+HW_MAX_LEAVES  := $(word $(HW_TREE_HEIGHT),2 2 4 8 16 32 64 64 64 64)
+HW_LEAF_BITS   := $(word $(HW_TREE_HEIGHT),1 1 2 3 4 5 6 6 6 6)
 UNITS          ?= 1
 # effect units of a simulation build: `scene` (what the scene uses; one
 # cached build per effect set), `all`, or `none`
@@ -45,7 +56,7 @@ help:
 	@echo "make model   build build/csgrt, the golden model and scene compiler"
 	@echo "make render [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [WIDTH=320] [HEIGHT=240]"
 	@echo "             render with the golden model to out/model/<scene>.png"
-	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [CONTEXTS=8] [MAX_LIGHTS=8] [WIDTH=..] [HEIGHT=..]"
+	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [CONTEXTS=8] [MAX_LIGHTS=8] [TREE_HEIGHT=8] [WIDTH=..] [HEIGHT=..]"
 	@echo "             run the RTL in Verilator; writes out/sim/<scene>.png and compares with the model"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
 	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [CONTEXTS=16] [MAX_LIGHTS=4] [LUT_TILE_MAX=81] [TREE_HEIGHT=7] [FREQ=100] [BAUD=3000000]"
@@ -169,7 +180,7 @@ endif
 # TRACE=1 builds a binary of its own with waveform tracing (suffix t): a
 # build Verilated with --trace-fst runs about 15 % slower even when it
 # writes no waveform (quadrics 64x48 B24: 1.13 s against 1.01 s, median of 5)
-SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHARE_II)),ii1,)$(if $(filter-out 8,$(CONTEXTS)),c$(CONTEXTS),)$(if $(filter-out 8,$(MAX_LIGHTS)),l$(MAX_LIGHTS),)$(if $(TRACE),t,)
+SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHARE_II)),ii1,)$(if $(filter-out 8,$(CONTEXTS)),c$(CONTEXTS),)$(if $(filter-out 8,$(MAX_LIGHTS)),l$(MAX_LIGHTS),)$(if $(filter-out 8,$(HW_TREE_HEIGHT)),h$(HW_TREE_HEIGHT),)$(if $(TRACE),t,)
 SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
 $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
