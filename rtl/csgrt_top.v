@@ -502,6 +502,27 @@ module csgrt_top #(
             wire [3*31-1:0]        sr_local;
             wire [3*26-1:0]        sr_spec;
 
+            // The camera's rays reach the ray tree through a skid buffer of
+            // their own: the ray tree takes a new pixel last in its event
+            // priority (after a child ray from csgrt_spawn, a hit, a stack
+            // pop), so its cam_ready_o is a decode of those sources' valid
+            // bits from across the die, and the camera's output skid and
+            // stage enable (csgrt_beat) hung on it: the longest path of the
+            // routed BITS 16 H 5 effects build once the spawn queue's read
+            // was registered (14.71 ns, 12.48 of them routing;
+            // docs/fpga.md). The buffer's ready_o is a register, so the
+            // camera's enable now starts at a flip-flop beside it. One
+            // clock more of latency per primary ray; the rate is unchanged.
+            wire                   cs_valid, cs_ready;
+            wire [11:0]            cs_x, cs_y;
+            wire [3*BITS-1:0]      cs_o, cs_d;
+            wire                   unused_cs_ready_next;
+            csgrt_skid #(.WIDTH(24 + 6 * BITS)) u_cam_skid (
+                .clk_i, .rst_ni,
+                .valid_i (cam_valid), .ready_o (cam_ready), .ready_next_o (unused_cs_ready_next),
+                .data_i ({cam_x, cam_y, cam_o, cam_d}),
+                .valid_o (cs_valid), .ready_i (cs_ready), .data_o ({cs_x, cs_y, cs_o, cs_d}));
+
             csgrt_raytree #(
                 .BITS(BITS), .TREE_HEIGHT(TREE_HEIGHT), .MAX_LIGHTS(MAX_LIGHTS), .CONTEXTS(CONTEXTS),
                 .MAX_DEPTH(MAX_DEPTH), .LOOK_BEHIND(LOOK_BEHIND), .SHADOWS(SHADOWS), .REFLECTION(REFLECTION),
@@ -512,8 +533,8 @@ module csgrt_top #(
                 .num_lights_i (num_lights[$clog2(MAX_LIGHTS+1)-1:0]), .light_color_i (light_col),
                 .light_shadowless_i (light_shadowless),
                 .background_i (background), .max_trace_i (max_trace),
-                .cam_valid_i (cam_valid), .cam_ready_o (cam_ready), .cam_x_i (cam_x), .cam_y_i (cam_y),
-                .cam_o_i (cam_o), .cam_d_i (cam_d),
+                .cam_valid_i (cs_valid), .cam_ready_o (cs_ready), .cam_x_i (cs_x), .cam_y_i (cs_y),
+                .cam_o_i (cs_o), .cam_d_i (cs_d),
                 .ray_valid_o (d_valid), .ray_ready_i (d_ready), .ray_rec_o (rt_rec), .ray_o_o (rt_o),
                 .ray_d_o (rt_d), .ray_info_o (rt_info),
                 .tr_valid_i (l_valid_q), .tr_ready_o (l_ready), .tr_rec_i (l_ray_q[RAY_W-1 -: REC_W]),
