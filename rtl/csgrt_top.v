@@ -502,25 +502,27 @@ module csgrt_top #(
             wire [3*31-1:0]        sr_local;
             wire [3*26-1:0]        sr_spec;
 
-            // The camera's rays reach the ray tree through a skid buffer of
-            // their own: the ray tree takes a new pixel last in its event
-            // priority (after a child ray from csgrt_spawn, a hit, a stack
-            // pop), so its cam_ready_o is a decode of those sources' valid
-            // bits from across the die, and the camera's output skid and
-            // stage enable (csgrt_beat) hung on it: the longest path of the
-            // routed BITS 16 H 5 effects build once the spawn queue's read
-            // was registered (14.71 ns, 12.48 of them routing;
-            // docs/fpga.md). The buffer's ready_o is a register, so the
-            // camera's enable now starts at a flip-flop beside it. One
-            // clock more of latency per primary ray; the rate is unchanged.
+            // The camera's rays reach the ray tree through a register slice
+            // of their own (csgrt_hold): the ray tree takes a new pixel last
+            // in its event priority (after a contribution, a child ray from
+            // csgrt_spawn, a hit, a stack pop), so its cam_ready_o is a
+            // decode of those sources' valid bits from across the die. It
+            // reached the camera's output skid and stage enable
+            // (csgrt_beat): the longest path of the routed BITS 16 H 5
+            // effects build once the spawn queue's read was registered
+            // (14.71 ns, 12.48 of them routing; docs/fpga.md). Through a
+            // two-word skid buffer instead, the decode still reached the
+            // buffer's word registers' enables, placed beside the camera
+            // (13.00 ns). The slice's ready_o and its data enable are its
+            // full bit, so the decode reaches that one flip-flop only. One
+            // clock more of latency per primary ray; a ray every 2 clocks
+            // at most, more than the ray tree takes.
             wire                   cs_valid, cs_ready;
             wire [11:0]            cs_x, cs_y;
             wire [3*BITS-1:0]      cs_o, cs_d;
-            wire                   unused_cs_ready_next;
-            csgrt_skid #(.WIDTH(24 + 6 * BITS)) u_cam_skid (
+            csgrt_hold #(.WIDTH(24 + 6 * BITS)) u_cam_hold (
                 .clk_i, .rst_ni,
-                .valid_i (cam_valid), .ready_o (cam_ready), .ready_next_o (unused_cs_ready_next),
-                .data_i ({cam_x, cam_y, cam_o, cam_d}),
+                .valid_i (cam_valid), .ready_o (cam_ready), .data_i ({cam_x, cam_y, cam_o, cam_d}),
                 .valid_o (cs_valid), .ready_i (cs_ready), .data_o ({cs_x, cs_y, cs_o, cs_d}));
 
             csgrt_raytree #(

@@ -1,4 +1,5 @@
-// tb_fifo.cpp — the queues' contracts (rtl/csgrt_fifo.v, rtl/csgrt_fifo_block.v):
+// tb_fifo.cpp — the queues' contracts (rtl/csgrt_fifo.v, rtl/csgrt_fifo_block.v,
+// and the one-word slice rtl/csgrt_hold.v: latency 1, one word, a word per 2 clocks):
 // every word comes out once, in order, under random input gaps and random
 // output back-pressure (tb::run_stream); the latency from acceptance to
 // valid_o is 1 clock for csgrt_fifo, 2 for csgrt_fifo_block and 3 for it with
@@ -49,6 +50,11 @@ Dut hr2(Top* t) {
             &t->hr2_data_i, &t->hr2_data_o, 3, kDepth + 2, 2};
 }
 
+Dut hold(Top* t) {
+    return {{&t->clk_i, &t->rst_ni, &t->hold_valid_i, &t->hold_ready_o, &t->hold_valid_o, &t->hold_ready_i},
+            &t->hold_data_i, &t->hold_data_o, 1, 1, 2};
+}
+
 std::vector<uint64_t> words(size_t n, uint64_t s) {
     std::mt19937_64 rng(s);
     std::vector<uint64_t> w(n);
@@ -63,8 +69,8 @@ void tick(Top* t) {
     t->eval();
 }
 void reset(Top* t) {
-    t->lut_valid_i = t->blk_valid_i = t->hr1_valid_i = t->hr2_valid_i = 0;
-    t->lut_ready_i = t->blk_ready_i = t->hr1_ready_i = t->hr2_ready_i = 0;
+    t->lut_valid_i = t->blk_valid_i = t->hr1_valid_i = t->hr2_valid_i = t->hold_valid_i = 0;
+    t->lut_ready_i = t->blk_ready_i = t->hr1_ready_i = t->hr2_ready_i = t->hold_ready_i = 0;
     t->clk_i = 0;
     t->rst_ni = 0;
     t->eval();
@@ -109,6 +115,7 @@ TEST(Fifo, LutRamStreamsInOrder) { stream(lut, "csgrt_fifo"); }
 TEST(Fifo, BlockRamStreamsInOrder) { stream(blk, "csgrt_fifo_block"); }
 TEST(Fifo, BlockRamHeadReg1StreamsInOrder) { stream(hr1, "fifo_block HR 1"); }
 TEST(Fifo, BlockRamHeadReg2StreamsInOrder) { stream(hr2, "fifo_block HR 2"); }
+TEST(Fifo, HoldStreamsInOrder) { stream(hold, "csgrt_hold"); }
 
 // With ready_i low the queue takes exactly its capacity, then refuses; then
 // it gives the words back in order at one per clock.
@@ -155,5 +162,6 @@ TEST(Fifo, LutRamCapacity) { fill_and_drain(lut, "csgrt_fifo"); }
 TEST(Fifo, BlockRamCapacity) { fill_and_drain(blk, "csgrt_fifo_block"); }
 TEST(Fifo, BlockRamHeadReg1Capacity) { fill_and_drain(hr1, "fifo_block HR 1"); }
 TEST(Fifo, BlockRamHeadReg2Capacity) { fill_and_drain(hr2, "fifo_block HR 2"); }
+TEST(Fifo, HoldCapacity) { fill_and_drain(hold, "csgrt_hold"); }
 
 }  // namespace

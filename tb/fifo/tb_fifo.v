@@ -1,7 +1,8 @@
 `default_nettype none
 // tb_fifo — Verilator top for tb_fifo.cpp: csgrt_fifo (LUT RAM, latency 1)
 // and csgrt_fifo_block (block RAM, latency 2; with HEAD_REG 1 and 2, latency
-// 3), side by side with their own handshakes, WIDTH bits wide and DEPTH entries deep.
+// 3), side by side with their own handshakes, WIDTH bits wide and DEPTH entries deep;
+// and csgrt_hold, the one-word register slice (latency 1, a word per 2 clocks).
 module tb_fifo #(
     parameter WIDTH = 40,
     parameter DEPTH = 8
@@ -35,7 +36,14 @@ module tb_fifo #(
     input  wire [WIDTH-1:0] hr2_data_i,
     output wire             hr2_valid_o,
     input  wire             hr2_ready_i,
-    output wire [WIDTH-1:0] hr2_data_o
+    output wire [WIDTH-1:0] hr2_data_o,
+    // csgrt_hold
+    input  wire             hold_valid_i,
+    output wire             hold_ready_o,
+    input  wire [WIDTH-1:0] hold_data_i,
+    output wire             hold_valid_o,
+    input  wire             hold_ready_i,
+    output wire [WIDTH-1:0] hold_data_o
 );
     csgrt_fifo #(.WIDTH(WIDTH), .DEPTH(DEPTH)) u_lut (
         .clk_i, .rst_ni, .valid_i(lut_valid_i), .ready_o(lut_ready_o), .data_i(lut_data_i),
@@ -49,5 +57,8 @@ module tb_fifo #(
     csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH), .HEAD_REG(2)) u_hr2 (
         .clk_i, .rst_ni, .valid_i(hr2_valid_i), .ready_o(hr2_ready_o), .data_i(hr2_data_i),
         .valid_o(hr2_valid_o), .ready_i(hr2_ready_i), .data_o(hr2_data_o));
+    csgrt_hold #(.WIDTH(WIDTH)) u_hold (
+        .clk_i, .rst_ni, .valid_i(hold_valid_i), .ready_o(hold_ready_o), .data_i(hold_data_i),
+        .valid_o(hold_valid_o), .ready_i(hold_ready_i), .data_o(hold_data_o));
 endmodule
 `default_nettype wire
