@@ -34,7 +34,8 @@ scene_name = $(basename $(notdir $(SCENE)))
 # (csgrt_top's parameters; the scene compiler checks scenes against them).
 # TREE_HEIGHT=H (make sim and make synth) builds the classification tree
 # for trees of height H (2^H leaf slots) with a leaf store of 2^(H-1)
-# leaves, at most 64, as tools/synth.sh does: TREE_HEIGHT=5 simulates the
+# leaves, 2 to 64, as tools/synth.sh does (tools/synth_args_test.py checks
+# that the lists below and the script agree): TREE_HEIGHT=5 simulates the
 # 16-leaf build routed in docs/fpga.md. make sim's binary for another
 # height than 8 gets the suffix hH.
 TREE_HEIGHT ?=

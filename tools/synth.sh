@@ -68,7 +68,7 @@ while [ $# -gt 0 ]; do
         --freq) FREQ=$2; shift 2 ;;
         --baud) BAUD=$2; shift 2 ;;
         --tree-height) TREE_HEIGHT=$2; shift 2 ;;   # csgrt_top's TREE_HEIGHT (scenes: csgrt compile --tree-height)
-        --max-leaves) MAX_LEAVES=$2; shift 2 ;;   # csgrt_top's MAX_LEAVES (default: 2^(height-1), at most 64)
+        --max-leaves) MAX_LEAVES=$2; shift 2 ;;   # csgrt_top's MAX_LEAVES (default: 2^(height-1), 2 to 64)
         --effects) EFFECTS=$2; shift 2 ;;          # csgrt_top's effect units (SHADOWS, REFLECTION, REFRACTION)
         --no-specular) SPECULAR=0; shift ;;       # csgrt_top's SPECULAR = 0: no phong highlights
         --sort-inserts) SORT_INSERTS=$2; shift 2 ;;   # csgrt_top's SORT_INSERTS (the event sorter's insertions per clock)
@@ -94,17 +94,21 @@ while [ $# -gt 0 ]; do
         *) echo "synth.sh: unknown argument $1" >&2; exit 1 ;;
     esac
 done
+need_number() { case "$2" in ''|*[!0-9]*) echo "synth.sh: $1 must be a number, not '$2'" >&2; exit 1 ;; esac; }
 # the leaf store: a tree of height H has 2^H leaf slots, so more leaves
 # than that could never be laid out; the default is half the slots (room
-# for an unbalanced tree, as the Makefile's H 7 / 64 leaves), at most 64
-case "$TREE_HEIGHT" in ''|*[!0-9]*) echo "synth.sh: --tree-height must be a number, not '$TREE_HEIGHT'" >&2; exit 1 ;; esac
+# for an unbalanced tree, as the Makefile's H 7 / 64 leaves), 2 to 64, the
+# Makefile's HW_MAX_LEAVES table (tools/synth_args_test.py checks they agree)
+need_number --tree-height "$TREE_HEIGHT"
 if [ "$TREE_HEIGHT" -lt 1 ] || [ "$TREE_HEIGHT" -gt 10 ]; then
     echo "synth.sh: --tree-height $TREE_HEIGHT is outside 1..10" >&2; exit 1
 fi
 if [ -z "$MAX_LEAVES" ]; then
-    MAX_LEAVES=$(( (1 << (TREE_HEIGHT - 1)) < 64 ? (1 << (TREE_HEIGHT - 1)) : 64 ))
+    MAX_LEAVES=$(( 1 << (TREE_HEIGHT - 1) ))
+    [ "$MAX_LEAVES" -ge 2 ] || MAX_LEAVES=2
+    [ "$MAX_LEAVES" -le 64 ] || MAX_LEAVES=64
 fi
-case "$MAX_LEAVES" in ''|*[!0-9]*) echo "synth.sh: --max-leaves must be a number, not '$MAX_LEAVES'" >&2; exit 1 ;; esac
+need_number --max-leaves "$MAX_LEAVES"
 if [ "$MAX_LEAVES" -lt 2 ] || [ "$MAX_LEAVES" -gt $(( 1 << TREE_HEIGHT )) ]; then
     echo "synth.sh: --max-leaves $MAX_LEAVES does not fit a tree of height $TREE_HEIGHT (2 to $(( 1 << TREE_HEIGHT )) leaf slots)" >&2; exit 1
 fi

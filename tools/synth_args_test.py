@@ -8,6 +8,7 @@ with arguments it must refuse, each before it writes anything.
 Prints googletest-style lines so that tools/run_tests.sh counts its tests.
 """
 import os
+import re
 import subprocess
 import sys
 
@@ -38,7 +39,7 @@ def refused(ctx, what, *args):
 
 def test_leaf_store_follows_the_tree(ctx):
     # 2^(H-1) leaves, at most 64: the BITS 16 H 5 builds of docs/fpga.md hold 16
-    for height, leaves in ((3, 4), (5, 16), (6, 32), (7, 64), (8, 64)):
+    for height, leaves in ((1, 2), (3, 4), (5, 16), (6, 32), (7, 64), (8, 64)):
         s = settings(ctx, "--tree-height", str(height))
         check(s["TREE_HEIGHT"] == str(height) and s["MAX_LEAVES"] == str(leaves),
               f"height {height}: MAX_LEAVES {s.get('MAX_LEAVES')}, want {leaves}")
@@ -46,6 +47,26 @@ def test_leaf_store_follows_the_tree(ctx):
     check(s["MAX_LEAVES"] == "32", f"an explicit --max-leaves 32 at H 5 became {s['MAX_LEAVES']}")
     s = settings(ctx)
     check(s["TREE_HEIGHT"] == "8" and s["MAX_LEAVES"] == "64", f"the defaults: {s}")
+
+
+def test_makefile_table_agrees(ctx):
+    # make sim TREE_HEIGHT=H takes its leaf store and leaf index width from
+    # two lookup lists in the Makefile; make synth leaves the store to
+    # synth.sh. Both must give the same core for every height.
+    with open(os.path.join(TOOLS, "..", "Makefile")) as f:
+        text = f.read()
+    lists = {}
+    for name in ("HW_MAX_LEAVES", "HW_LEAF_BITS"):
+        m = re.search(name + r"\s*:=\s*\$\(word \$\(HW_TREE_HEIGHT\),([0-9 ]+)\)", text)
+        check(m, f"no {name} lookup list in the Makefile")
+        lists[name] = [int(v) for v in m.group(1).split()]
+    check(len(lists["HW_MAX_LEAVES"]) == 10 and len(lists["HW_LEAF_BITS"]) == 10, f"lists of 10 heights: {lists}")
+    for height in range(1, 11):
+        leaves = lists["HW_MAX_LEAVES"][height - 1]
+        bits = lists["HW_LEAF_BITS"][height - 1]
+        s = settings(ctx, "--tree-height", str(height))
+        check(s["MAX_LEAVES"] == str(leaves), f"height {height}: Makefile {leaves} leaves, synth.sh {s['MAX_LEAVES']}")
+        check((1 << bits) >= leaves > (1 << (bits - 1)), f"height {height}: {bits} bits for {leaves} leaves")
 
 
 def test_effects_and_lights(ctx):
@@ -68,5 +89,6 @@ def test_refusals(ctx):
 
 if __name__ == "__main__":
     sys.exit(run_suite("SynthArgs", [("LeafStoreFollowsTheTree", test_leaf_store_follows_the_tree),
+                                     ("MakefileTableAgrees", test_makefile_table_agrees),
                                      ("EffectsAndLights", test_effects_and_lights),
                                      ("Refusals", test_refusals)], __file__))
