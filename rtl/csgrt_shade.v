@@ -73,7 +73,10 @@
 // specular unit), 2 csgrt_div_core instead of 6; a pixel or light item
 // every third clock; the input is registered first (the shared A0
 // multiplier reads it for a whole beat); latency 322 clocks (BITS any,
-// one light, no back-pressure).
+// one light, no back-pressure). A stage then has a whole beat for its
+// logic, which nextpnr times as one clock: the longer add stages (A3, A11,
+// B9, B13, C4) are split by a register in mid-beat (csgrt_beat_cut), with
+// the same results and latency.
 // Handshake: valid/ready on both sides; s_ready_o is skid A's registered
 // ready, never combinational from m_ready_i. Config (lights, background) is
 // read when a pixel's items are issued (the light positions through a
@@ -290,8 +293,12 @@ module csgrt_shade #(
             wire [GPW-1:0] p1 = gp[(3*i+1)*GPW +: GPW];
             wire [GPW-1:0] p2 = gp[(3*i+2)*GPW +: GPW];
             wire [KSW-1:0] kp = a2_kp[i*KSW +: KSW];
-            wire [GSW-1:0] s = {{3{p0[GPW-1]}}, p0} + {{3{p1[GPW-1]}}, p1} + {{3{p2[GPW-1]}}, p2}
-                             + {{(GSW-KSW-12){kp[KSW-1]}}, kp, 12'd0}
+            // the products' sum, then (after a beat cut) the rest
+            wire [GSW-1:0] sp_d = {{3{p0[GPW-1]}}, p0} + {{3{p1[GPW-1]}}, p1} + {{3{p2[GPW-1]}}, p2};
+            wire [GSW-1:0] sp;
+            csgrt_beat_cut #(.WIDTH(GSW), .II(II)) u_cut (
+                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_a), .d_i(sp_d), .q_o(sp));
+            wire [GSW-1:0] s = sp + {{(GSW-KSW-12){kp[KSW-1]}}, kp, 12'd0}
                              + {{(GSW-15){1'b0}}, 1'b1, 14'd0};
             wire unused_s = ^{s[14:0], s[GSW-1:15+GW]};
             assign g_d[i*GW +: GW] = s[15 +: GW];
@@ -337,12 +344,16 @@ module csgrt_shade #(
 
     // ---- A11: face the ray, dn = rnd(ds.n, SF) --------------------------------
     localparam NDSW = NDPW + 2;
-    wire [NDSW-1:0] nd = {{2{nds[NDPW-1]}}, nds[0 +: NDPW]} + {{2{nds[2*NDPW-1]}}, nds[NDPW +: NDPW]}
-                       + {{2{nds[3*NDPW-1]}}, nds[2*NDPW +: NDPW]};
+    wire [NDSW-1:0] nd_d = {{2{nds[NDPW-1]}}, nds[0 +: NDPW]} + {{2{nds[2*NDPW-1]}}, nds[NDPW +: NDPW]}
+                         + {{2{nds[3*NDPW-1]}}, nds[2*NDPW +: NDPW]};
+    wire [NDSW-1:0] nd;   // the dot product, after a beat cut
+    csgrt_beat_cut #(.WIDTH(NDSW), .II(II)) u_cut_a11 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_a), .d_i(nd_d), .q_o(nd));
     // exact sign of the full dot product: flip when n.ds > 0
     wire            flip = !nd[NDSW-1] && (nd != {NDSW{1'b0}});
-    wire [NDSW-1:0] ndf = flip ? {NDSW{1'b0}} - nd : nd;   // ds . n after the flip
-    wire [NDSW-1:0] ndf_r = ndf + {{(NDSW-15){1'b0}}, 1'b1, 14'd0};
+    // ds . n after the flip, rounded: flip ? -nd + h : nd + h with -nd =
+    // ~nd + 1, as one adder (h = 2^14, whose low bits are free for the 1)
+    wire [NDSW-1:0] ndf_r = (nd ^ {NDSW{flip}}) + {{(NDSW-15){1'b0}}, 1'b1, 13'd0, flip};
     wire unused_ndf = ^{ndf_r[14:0], ndf_r[NDSW-1:15+DNW]};
     wire [3*NVW-1:0] nf_d;
     generate
@@ -541,10 +552,17 @@ module csgrt_shade #(
     // ---- B9: ndl, cos_r and the enables -----------------------------------------
     localparam NLSW = NLPW + 2;
     localparam RLSW = RLPW + 2;
-    wire [NLSW-1:0] ndl_s = {{2{nl_p[NLPW-1]}}, nl_p[0 +: NLPW]} + {{2{nl_p[2*NLPW-1]}}, nl_p[NLPW +: NLPW]}
-                          + {{2{nl_p[3*NLPW-1]}}, nl_p[2*NLPW +: NLPW]} + {{(NLSW-15){1'b0}}, 1'b1, 14'd0};
-    wire [RLSW-1:0] cr_s  = {{2{rl_p[RLPW-1]}}, rl_p[0 +: RLPW]} + {{2{rl_p[2*RLPW-1]}}, rl_p[RLPW +: RLPW]}
-                          + {{2{rl_p[3*RLPW-1]}}, rl_p[2*RLPW +: RLPW]} + {{(RLSW-15){1'b0}}, 1'b1, 14'd0};
+    // the products' sums, then (after a beat cut) the rounding and the tests
+    wire [NLSW-1:0] ndl_p = {{2{nl_p[NLPW-1]}}, nl_p[0 +: NLPW]} + {{2{nl_p[2*NLPW-1]}}, nl_p[NLPW +: NLPW]}
+                          + {{2{nl_p[3*NLPW-1]}}, nl_p[2*NLPW +: NLPW]};
+    wire [RLSW-1:0] cr_p  = {{2{rl_p[RLPW-1]}}, rl_p[0 +: RLPW]} + {{2{rl_p[2*RLPW-1]}}, rl_p[RLPW +: RLPW]}
+                          + {{2{rl_p[3*RLPW-1]}}, rl_p[2*RLPW +: RLPW]};
+    wire [NLSW-1:0] ndl_c;
+    wire [RLSW-1:0] cr_c;
+    csgrt_beat_cut #(.WIDTH(NLSW + RLSW), .II(II)) u_cut_b9 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .d_i({cr_p, ndl_p}), .q_o({cr_c, ndl_c}));
+    wire [NLSW-1:0] ndl_s = ndl_c + {{(NLSW-15){1'b0}}, 1'b1, 14'd0};
+    wire [RLSW-1:0] cr_s  = cr_c + {{(RLSW-15){1'b0}}, 1'b1, 14'd0};
     wire [NLSW-16:0] ndl_full = ndl_s[NLSW-1:15];
     wire [RLSW-16:0] cr_full  = cr_s[RLSW-1:15];
     wire unused_b9 = ^{ndl_s[14:0], cr_s[14:0]};
@@ -711,8 +729,13 @@ module csgrt_shade #(
             wire [LPW-1:0] sp = lsp[i*LPW +: LPW] + {{(LPW-12){1'b0}}, 1'b1, 11'd0};   // rnd(., CF)
             wire unused_dp = ^{dp[14:0], dp[LPW-1:15+DAW-3], sp[11:0]};
             // terms are non-negative (light colours >= 0, ndl > 0, ph > 0)
-            wire [DAW-1:0] dt = b12_den ? {3'b000, dp[15 +: DAW-3]} : {DAW{1'b0}};
-            wire [SAW-1:0] st = b12_sen ? {{(SAW-(LPW-12)){1'b0}}, sp[LPW-1:12]} : {SAW{1'b0}};
+            wire [DAW-1:0] dt_d = b12_den ? {3'b000, dp[15 +: DAW-3]} : {DAW{1'b0}};
+            wire [SAW-1:0] st_d = b12_sen ? {{(SAW-(LPW-12)){1'b0}}, sp[LPW-1:12]} : {SAW{1'b0}};
+            // the terms, after a beat cut: the rounding before it, the sums after
+            wire [DAW-1:0] dt;
+            wire [SAW-1:0] st;
+            csgrt_beat_cut #(.WIDTH(DAW + SAW), .II(II)) u_cut (
+                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .d_i({st_d, dt_d}), .q_o({st, dt}));
             assign dsum[i*DAW +: DAW] = (b12_first ? {DAW{1'b0}} : dacc_q[i*DAW +: DAW]) + dt;
             // without the specular unit the sum is constant 0 (no register left)
             assign ssum[i*SAW +: SAW] = (SPECULAR == 0) ? {SAW{1'b0}}
@@ -796,7 +819,11 @@ module csgrt_shade #(
         for (i = 0; i < 3; i = i + 1) begin : g_c4
             wire [CPW-1:0] pr = cp[i*CPW +: CPW] + {{(CPW-12){1'b0}}, 1'b1, 11'd0};
             wire unused_pr = ^{pr[11:0]};
-            wire [CLW-1:0] col_hit = {{(CLW-(CPW-12)){pr[CPW-1]}}, pr[CPW-1:12]}
+            // the rounded product, after a beat cut: the sum and clamp after it
+            wire [CPW-13:0] prc;
+            csgrt_beat_cut #(.WIDTH(CPW - 12), .II(II)) u_cut (
+                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .d_i(pr[CPW-1:12]), .q_o(prc));
+            wire [CLW-1:0] col_hit = {{(CLW-(CPW-12)){prc[CPW-13]}}, prc}
                                    + {{(CLW-SAW){1'b0}}, c3_spec[i*SAW +: SAW]};
             assign col_lin[i*CLW +: CLW] = col_hit;
             wire [CLW-1:0] col = c3_pix[PX_HIT] ? col_hit
