@@ -164,18 +164,28 @@ module csgrt_isect #(
             // exact sums (FC+F fraction bits) plus the rounding half
             wire [S1W-1:0] su = {{(S1W-2*B){pu0[2*B-1]}}, pu0} + {{(S1W-2*B){pu1[2*B-1]}}, pu1}
                               + {{(S1W-2*B){pu2[2*B-1]}}, pu2} + RND_FC;
-            wire [S1W-1:0] sw = {{(S1W-2*B){pw0[2*B-1]}}, pw0} + {{(S1W-2*B){pw1[2*B-1]}}, pw1}
-                              + {{(S1W-2*B){pw2[2*B-1]}}, pw2}
-                              + {{(S1W-B-F){p[B-1]}}, p, {F{1'b0}}} + RND_FC;
-            // rnd(p, FC-F = 2) = (p + 2) >> 2
-            wire [B:0]     pr_full = {p[B-1], p} + {{(B-1){1'b0}}, 2'b10};
-            wire [PRW-1:0] pr = pr_full[B:2];
+            // w = rnd(A o + p << F, FC) and w + rnd(p, FC-F) as two sums of
+            // the same products, side by side, not one after the other (the
+            // second sum was the routed effects build's critical path): with
+            // m = p + 2, since RND_FC = 2 << F,
+            //   A o + p << F + RND_FC           = A o + m << F
+            //   and rnd(p, 2) = floor(m / 4), so
+            //   (A o + m << F) + rnd(p, 2) << FC = A o + (m + 4 floor(m / 4)) << F
+            // (FC = F + 2); floor(x / 2^FC) of the second is w + rnd(p, 2).
+            // m and m2 come from a register while the products' sum runs.
+            wire [S1W-1:0] sp = {{(S1W-2*B){pw0[2*B-1]}}, pw0} + {{(S1W-2*B){pw1[2*B-1]}}, pw1}
+                              + {{(S1W-2*B){pw2[2*B-1]}}, pw2};
+            wire [B:0]     m  = {p[B-1], p} + {{(B-1){1'b0}}, 2'b10};
+            wire [B+1:0]   m2 = {m[B], m} + {m[B], m[B:2], 2'b00};
+            wire [S1W-1:0] sw  = sp + {{(S1W-B-1-F){m[B]}}, m, {F{1'b0}}};
+            wire [S1W-1:0] swp = sp + {{(S1W-B-2-F){m2[B+1]}}, m2, {F{1'b0}}};
             wire [UW-1:0]  w = sw[FC +: UW];
-            // dropped LSBs, and sign copies above the exact bound
-            wire unused_p1 = ^{su[FC-1:0], su[S1W-1:FC+UW], sw[FC-1:0], sw[S1W-1:FC+UW], pr_full[1:0]};
+            // dropped LSBs, and sign copies above the exact bound (swp's
+            // top is WPW wide: S1W = FC + WPW)
+            wire unused_p1 = ^{su[FC-1:0], su[S1W-1:FC+UW], sw[FC-1:0], sw[S1W-1:FC+UW], swp[FC-1:0]};
             assign u_d[i*UW +: UW]    = su[FC +: UW];
             assign w_d[i*UW +: UW]    = w;
-            assign wp_d[i*WPW +: WPW] = {w[UW-1], w} + {{(WPW-PRW){pr[PRW-1]}}, pr};
+            assign wp_d[i*WPW +: WPW] = swp[FC +: WPW];
         end
     endgenerate
     // rnd(q, 2)
@@ -239,9 +249,14 @@ module csgrt_isect #(
                       + {{(S2W-PAW){pa2[PAW-1]}}, pa2} + RND_F;
     wire [S2W-1:0] sb = {{(S2W-PAW){pb0[PAW-1]}}, pb0} + {{(S2W-PAW){pb1[PAW-1]}}, pb1}
                       + {{(S2W-PAW){pb2[PAW-1]}}, pb2} + RND_F;
+    // c = rnd(o.(w+p'), F) + rnd(q, FC-F) in one sum: rnd(x, F) + r =
+    // floor((x + (r << F) + 2^(F-1)) / 2^F), and (r << F) + 2^(F-1) is a
+    // concatenation, no adder (as a separate add after the sum it was one
+    // more carry chain on the stage's path)
     wire [S2W-1:0] sc = {{(S2W-PCW){pc0[PCW-1]}}, pc0} + {{(S2W-PCW){pc1[PCW-1]}}, pc1}
-                      + {{(S2W-PCW){pc2[PCW-1]}}, pc2} + RND_F;
-    wire [CW-1:0]  c_d = sc[F +: CW] + {{(CW-PRW){p2_qr[PRW-1]}}, p2_qr};
+                      + {{(S2W-PCW){pc2[PCW-1]}}, pc2}
+                      + {{(S2W-PRW-F){p2_qr[PRW-1]}}, p2_qr, 1'b1, {(F-1){1'b0}}};
+    wire [CW-1:0]  c_d = sc[F +: CW];
     // dropped LSBs, and the bits above the bounds on a, b, c
     wire unused_p3 = ^{sa[F-1:0], sa[S2W-1:F+AW], sb[F-1:0], sb[S2W-1:F+BW], sc[F-1:0], sc[S2W-1:F+CW]};
 
