@@ -100,6 +100,7 @@ module csgrt_raytree #(
     input  wire [7:0]                tr_to_i,
     input  wire [10*BITS-1:0]        tr_coef_i,        // the hit leaf's quadric
     input  wire [MAT_W-1:0]          tr_mat_i,         // the shown material's record
+    input  wire [1:0]                tr_mat_want_i,    // its {filter != 0, reflection != 0} (csgrt_scene_loader)
     input  wire [NS-1:0]             tr_flags_near_i,  // flags just before the hit crossing
     input  wire [RUN_W-1:0]          tr_run_i,         // the look-behind run
     input  wire [NS-1:0]             tr_flags_after_i,
@@ -282,9 +283,20 @@ module csgrt_raytree #(
     // (max_trace_i is steady during a frame.)
     wire [3:0]         tr_depth     = tr_rec_i[1 + CB + KW + 48 +: 4];
     wire               tr_deeper    = ({4'd0, tr_depth} < max_trace_i);
-    wire               tr_want_refl = (REFLECTION != 0) && tr_deeper && (tr_mat_i[M_REFL +: 16] != 16'd0);
+    // (The material's two tests come with it from the loader, which made
+    // them when the material was written: tested here after the material
+    // memory's block-RAM read they were the routed effects build's
+    // critical path, docs/fpga.md.)
+    wire               tr_want_refl = (REFLECTION != 0) && tr_deeper && tr_mat_want_i[0];
     // accumulate_fx's `transmits`: the shown material lets light through
-    wire               tr_want_refr = (REFRACTION != 0) && tr_deeper && (tr_mat_i[M_FILTER +: 16] != 16'd0);
+    wire               tr_want_refr = (REFRACTION != 0) && tr_deeper && tr_mat_want_i[1];
+`ifndef SYNTHESIS
+    // the loader's bits are the tests of this very record
+    csgrt_check_same #(.WIDTH(2), .WHAT("tr_mat_want_i")) u_check_want (
+        .clk_i, .rst_ni,
+        .copy_i(tr_valid_i ? tr_mat_want_i : 2'b00),
+        .orig_i(tr_valid_i ? {tr_mat_i[M_FILTER +: 16] != 16'd0, tr_mat_i[M_REFL +: 16] != 16'd0} : 2'b00));
+`endif
     csgrt_hit_prep #(.BITS(B), .MAX_LIGHTS(MAX_LIGHTS), .DIST_W(DIST_W), .REC_W(TREC_W), .II(II)) u_prep (
         .clk_i, .rst_ni, .background_i, .light_color_i,
         .s_valid_i (tr_valid_i), .s_ready_o (tr_ready_o),

@@ -62,6 +62,7 @@ module csgrt_scene_loader #(
     // material memory read port (material index 1..; 0 reads entry 0)
     input  wire [7:0]                 mat_addr_i,
     output reg  [9*16+10-1:0]         mat_o,       // the record below
+    output reg  [1:0]                 mat_want_o,  // the same material's {filter != 0, reflection != 0}
     // refraction: leaf memory read port C (the look-ahead's quadric test),
     // the index of refraction of two materials (ior_of: air 1 << 12) and a
     // bit per material that lets rays through (is_transparent: air, or
@@ -100,6 +101,13 @@ module csgrt_scene_loader #(
     reg [7:0]             leaf_mat_q    [0:MAX_LEAVES-1];
     reg [MAT_W-1:0]       mat_mem       [0:MAX_MATERIALS];
     reg [15:0]            ior_mem       [0:MAX_MATERIALS];   // the iors again: two more read ports
+    // {filter != 0, reflection != 0} of each material, tested when it is
+    // written: the ray tree decides a hit's reflected and transmitted
+    // children from them, and the zero tests after mat_mem's block-RAM read
+    // (5.8 ns clock to output) were the routed effects build's critical
+    // path. LUT RAM, whose read is fast and whose read register is a
+    // fabric flip-flop.
+    (* ram_style = "distributed" *) reg [1:0] mat_want_mem [0:MAX_MATERIALS];
 
     // per-section position: item and field counters instead of divisions
     reg [31:0]            item_q;
@@ -264,6 +272,8 @@ module csgrt_scene_loader #(
                                   mat_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], w[9:0],
                                                                   mat_acc_q[111:0]};
                                   ior_mem[it_now[7:0] + 8'd1] <= mat_acc_q[128 +: 16];
+                                  mat_want_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[112 +: 16] != 16'd0,
+                                                                       mat_acc_q[96 +: 16] != 16'd0};
                                   mat_clear_o[it_now[7:0] + 8'd1] <= mat_acc_q[112 +: 16] != 16'd0;
                               end
                         default: ;
@@ -305,6 +315,7 @@ module csgrt_scene_loader #(
         leaf_a_slot_o <= leaf_slot_mem[leaf_a_addr_i];
         leaf_b_coef_o <= leaf_coef_mem[leaf_b_addr_i];
         mat_o         <= mat_mem[mat_addr_i];
+        mat_want_o    <= mat_want_mem[mat_addr_i];
         leaf_c_coef_o <= leaf_coef_mem[leaf_c_addr_i];
         ior_a_o       <= (ior_a_addr_i == 8'd0) ? 16'd4096 : ior_mem[ior_a_addr_i];
         ior_b_o       <= (ior_b_addr_i == 8'd0) ? 16'd4096 : ior_mem[ior_b_addr_i];
@@ -314,6 +325,7 @@ module csgrt_scene_loader #(
         for (k = 0; k <= MAX_MATERIALS; k = k + 1) begin
             mat_mem[k] = {MAT_W{1'b0}};
             ior_mem[k] = 16'd0;
+            mat_want_mem[k] = 2'd0;
         end
     end
 endmodule

@@ -109,6 +109,7 @@ module csgrt_top #(
     wire [TREE_HEIGHT-1:0]    leaf_a_slot;
     wire [7:0]                mat_addr;
     wire [MAT_W-1:0]          mat;
+    wire [1:0]                mat_want;   // mat's {filter != 0, reflection != 0}
     wire [LEAF_BITS-1:0]      leaf_c_addr;
     wire [10*BITS-1:0]        leaf_c_coef;
     wire [7:0]                ior_a_addr, ior_b_addr;
@@ -130,7 +131,7 @@ module csgrt_top #(
         .node_op_o (node_op), .slot_material_o (slot_material), .slot_used_o (slot_used),
         .leaf_a_addr_i (leaf_a_addr), .leaf_a_coef_o (leaf_a_coef), .leaf_a_slot_o (leaf_a_slot),
         .leaf_b_addr_i (leaf_b_addr), .leaf_b_coef_o (leaf_b_coef),
-        .mat_addr_i (mat_addr), .mat_o (mat),
+        .mat_addr_i (mat_addr), .mat_o (mat), .mat_want_o (mat_want),
         .leaf_c_addr_i (leaf_c_addr), .leaf_c_coef_o (leaf_c_coef),
         .ior_a_addr_i (ior_a_addr), .ior_a_o (ior_a), .ior_b_addr_i (ior_b_addr), .ior_b_o (ior_b),
         .mat_clear_o (mat_clear)
@@ -438,7 +439,7 @@ module csgrt_top #(
             assign d_last    = cam_last;
             assign d_info    = {INFO_P{1'b0}};
 
-            wire unused_eff = ^{hit_entering, l_to_q, l_near_q, l_after_q, l_run_q, mat[MAT_W-1:96], max_trace,
+            wire unused_eff = ^{hit_entering, l_to_q, l_near_q, l_after_q, l_run_q, mat[MAT_W-1:96], mat_want, max_trace,
                                 l_from_q, ior_a, ior_b, mat_clear, leaf_c_coef,
                                 light_shadowless};   // every light is unshadowed here
             csgrt_shade #(.BITS(BITS), .MAX_LIGHTS(MAX_LIGHTS), .LUT_FILE(LUT_FILE), .SPECULAR(SPECULAR),
@@ -542,7 +543,7 @@ module csgrt_top #(
                 .tr_valid_i (l_valid_q), .tr_ready_o (l_ready), .tr_rec_i (l_ray_q[RAY_W-1 -: REC_W]),
                 .tr_o_i (l_ray_q[6*BITS-1:3*BITS]), .tr_d_i (l_ray_q[3*BITS-1:0]),
                 .tr_hit_i (l_hit_q), .tr_t_i (l_t_q), .tr_to_i (l_to_q), .tr_coef_i (leaf_b_coef),
-                .tr_mat_i (mat), .tr_flags_near_i (l_near_q), .tr_run_i (l_run_q), .tr_flags_after_i (l_after_q),
+                .tr_mat_i (mat), .tr_mat_want_i (mat_want), .tr_flags_near_i (l_near_q), .tr_run_i (l_run_q), .tr_flags_after_i (l_after_q),
                 .tr_ior_from_i (ior_a), .tr_ior_to_i (ior_b),
                 .sp_valid_o (sp_valid), .sp_ready_i (sp_ready), .sp_o_o (sp_o), .sp_d_o (sp_d), .sp_t_o (sp_t),
                 .sp_coef_o (sp_coef), .sp_lights_o (sp_lights), .sp_reflect_o (sp_reflect), .sp_user_o (sp_user),
