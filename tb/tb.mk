@@ -83,6 +83,7 @@ LINT_TOP_BITS := 12 16 24 32
 LINT_SPAWN_FX := "-GREFRACTION=0" "-GREFLECTION=0 -GREFRACTION=0" "-GREFLECTION=0" "-GSHADOWS=0" \
                  "-GSHADOWS=0 -GREFRACTION=0"
 lint-rtl:
+	@mkdir -p $(BUILD)   # the yosys logs below go there (a fresh clone has no build/)
 	@set -e; for m in $(LINT_MODULES); do \
 	    echo "verilator lint $$m"; \
 	    $(VERILATOR) --lint-only -Wall -y rtl -y tb/ecp5 --top-module $$m rtl/$$m.v; \
