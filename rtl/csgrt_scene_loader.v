@@ -114,6 +114,11 @@ module csgrt_scene_loader #(
     reg [3:0]             field_q;
     reg [10*BITS-1:0]     coef_acc_q;     // the leaf being assembled
     reg [MAT_W-11:0]      mat_acc_q;      // the material being assembled: fields without phong_size
+    // its two tests, stored when it is written: it lets light through
+    // (filter > 0: mat_clear_o, and the ray tree's transmitted child) and
+    // it reflects (the ray tree's reflected child)
+    wire                  mat_acc_clear    = mat_acc_q[112 +: 16] != 16'd0;
+    wire                  mat_acc_reflects = mat_acc_q[96 +: 16] != 16'd0;
 
     // Two stages. Stage 0 takes the arriving word: it parses the header
     // and works out where the word belongs from its index (32-bit compares
@@ -272,9 +277,8 @@ module csgrt_scene_loader #(
                                   mat_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], w[9:0],
                                                                   mat_acc_q[111:0]};
                                   ior_mem[it_now[7:0] + 8'd1] <= mat_acc_q[128 +: 16];
-                                  mat_want_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[112 +: 16] != 16'd0,
-                                                                       mat_acc_q[96 +: 16] != 16'd0};
-                                  mat_clear_o[it_now[7:0] + 8'd1] <= mat_acc_q[112 +: 16] != 16'd0;
+                                  mat_want_mem[it_now[7:0] + 8'd1] <= {mat_acc_clear, mat_acc_reflects};
+                                  mat_clear_o[it_now[7:0] + 8'd1] <= mat_acc_clear;
                               end
                         default: ;
                     endcase
