@@ -35,6 +35,10 @@
 //
 // Events, one per clock, in priority order: a contribution (shading done),
 // a spawned child, a traced ray, a stack pop, a new pixel from the camera.
+// An event is chosen in one clock (E0: the sources' valid bits alone, the
+// source's ready, the event's fields into registers) and carried out in
+// the next (E1: the context state from those registers), so that the
+// choice is a register in front of the state's write enables.
 // The stack and the wide queues are block RAM (LUTs are what the FPGA lacks),
 // so a pop's entry is read the clock before its event.
 // Handshakes: valid/ready everywhere; outputs that leave the module are
@@ -351,7 +355,7 @@ module csgrt_raytree #(
         .m_valid_o (ct_valid), .m_ready_i (ct_ready), .m_tag_o (ct_ctx), .m_contrib_o (ct_contrib));
 
     // ---- the ray FIFO and the spawn request FIFO ------------------------------------------
-    reg                 rq_push;
+    wire                rq_push;            // E1 (below)
     reg  [REC_W-1:0]    rq_rec;
     reg  [3*B-1:0]      rq_o, rq_d;
     reg  [INFO_W-1:0]   rq_info;
@@ -362,7 +366,7 @@ module csgrt_raytree #(
 
     // spawn requests: {iors, refract, ctx, reflect, lights, coef, t, d, o} of the colour ray's hit
     localparam SPQ_W = 3 * B + 3 * B + TW + 10 * B + MAX_LIGHTS + 1 + CB + 1 + 32;
-    reg                 spq_push;
+    wire                spq_push;           // E1 (below)
     reg  [SPQ_W-1:0]    spq_data;
     wire                spq_room;
     // the head in a fabric register (HEAD_REG 1): csgrt_spawn tests the
@@ -414,7 +418,7 @@ module csgrt_raytree #(
     reg               pr_valid_q;          // pop_ram_q holds the entry
     reg               pop_staged_q;
     reg  [CB-1:0]     pop_ctx_q;
-    wire              pop_idle  = !pa_valid_q && !pr_valid_q && !pop_staged_q;
+    wire              pop_idle;
     wire              pa_load   = pop_any && pop_idle;
     wire              pop_stage = pa_valid_q;
     wire              pop_fab   = pr_valid_q;
@@ -433,13 +437,71 @@ module csgrt_raytree #(
     // full flag ran through this decode and its two ~500-load selects into
     // the pushed record, the longest path of the whole design in
     // tools/logic_depth.py's model.)
-    reg  ctp_valid_q;                   // a contribution, summed (below)
-    wire ev_ct  = ctp_valid_q;
-    wire ev_ch  = !ctp_valid_q && ch_valid_i;
-    wire ev_hp  = !ctp_valid_q && !ch_valid_i && hp_valid;
-    wire ev_pop = !ctp_valid_q && !ch_valid_i && !hp_valid && pop_staged_q;
-    wire ev_cam = !ctp_valid_q && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out_q
-                  && !start_i;
+    //
+    // The event is chosen in E0 and carried out in E1, a clock later, from
+    // registers: the kind (ev_*), the fields the state update needs (e_*,
+    // loaded on every clock, so no enable hangs on the choice) and, for a
+    // contribution, the early sum (ctp_*). With the choice in front of the
+    // context memories' write enables and addresses in the same clock, the
+    // spawn unit's output valid (209 loads) ran through the priority
+    // decode and two to four more LUTs into them (tools/logic_depth.py:
+    // 17.73 ns, the whole design's longest path). The state is read in E1
+    // only, after the previous event's writes, so events still act one
+    // after another; E0 reads no context state but these, each safe:
+    //  - a new pixel's free context and room in the output buffer: E0 takes
+    //    no new pixel while one is in E1 (its context and sequence number
+    //    are then written), and the other events only free contexts (in
+    //    csgrt_top the camera's csgrt_hold offers a pixel every other clock
+    //    at most, so there this rule never waits; it keeps the module right
+    //    for any source);
+    //  - the pop: its staged entry is released in E0, and no new pop is
+    //    staged while one is in E1 (its stack pointer is then written);
+    //  - a child's stack entry (ch_entry) and a shadow ray's record read the
+    //    hit's state, written when the hit came back, long before.
+    // The pushes into the ray and spawn request FIFOs happen in E1 from
+    // the records loaded at the end of E0, the same clock as before.
+    reg  ev_ct, ev_ch, ev_hp, ev_pop, ev_cam;
+    wire ev0_ct  = ct_valid;
+    wire ev0_ch  = !ct_valid && ch_valid_i;
+    wire ev0_hp  = !ct_valid && !ch_valid_i && hp_valid;
+    wire ev0_pop = !ct_valid && !ch_valid_i && !hp_valid && pop_staged_q;
+    wire ev0_cam = !ct_valid && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out_q
+                   && !start_i && !ev_cam;
+    always @(posedge clk_i)
+        if (!rst_ni) {ev_ct, ev_ch, ev_hp, ev_pop, ev_cam} <= 5'd0;
+        else         {ev_ct, ev_ch, ev_hp, ev_pop, ev_cam} <= {ev0_ct, ev0_ch, ev0_hp, ev0_pop, ev0_cam};
+    assign pop_idle = !pa_valid_q && !pr_valid_q && !pop_staged_q && !ev_pop;
+    // the fields E1 needs, from whichever source E0 took
+    reg  [2:0]    e_ch_kind;
+    reg  [KW-1:0] e_ch_light;
+    reg  [CB-1:0] e_ch_user;
+    reg           e_ch_lit, e_ch_last;
+    reg  [SW-1:0] e_ch_entry;
+    reg  [CB-1:0] e_h_ctx;
+    reg  [KW-1:0] e_h_light;
+    reg           e_h_shadow, e_h_colour_hit, e_want_spawn, e_sh_ends;
+    reg  [47:0]   e_sh_color;
+    reg  [38:0]   e_hp_bg;
+    reg  [CB-1:0] e_free_ctx;
+    reg  [23:0]   e_cam_xy;
+    always @(posedge clk_i) begin
+        e_ch_kind      <= ch_kind_i;
+        e_ch_light     <= ch_light_i;
+        e_ch_user      <= ch_user_i;
+        e_ch_lit       <= ch_lit_i;
+        e_ch_last      <= ch_last_i;
+        e_ch_entry     <= ch_entry;
+        e_h_ctx        <= h_ctx;
+        e_h_light      <= h_light;
+        e_h_shadow     <= h_shadow;
+        e_h_colour_hit <= h_colour_hit;
+        e_want_spawn   <= want_spawn;
+        e_sh_ends      <= hp_sh_ends;
+        e_sh_color     <= hp_sh_color;
+        e_hp_bg        <= hp_bg;
+        e_free_ctx     <= free_ctx;
+        e_cam_xy       <= {cam_y_i, cam_x_i};
+    end
     // the output buffer's counters' next values: the pixel sequence
     // restarts at a frame's start and steps with a new pixel; the retire
     // pointer steps with a pixel out (both registers load these; room_out_q
@@ -460,9 +522,9 @@ module csgrt_raytree #(
         end
 `endif
     assign ct_ready    = 1'b1;          // the contribution event is never refused (first in priority)
-    assign ch_ready_o  = ev_ch;
-    assign hp_ready    = ev_hp;
-    assign cam_ready_o = ev_cam;
+    assign ch_ready_o  = ev0_ch;
+    assign hp_ready    = ev0_hp;
+    assign cam_ready_o = ev0_cam;
 
     // saturating colour sum
     function [38:0] add_sat(input [38:0] a, input [38:0] b);
@@ -578,8 +640,6 @@ module csgrt_raytree #(
     reg  [OBW-1:0] ctp_slot_q;
     reg  [23:0]    ctp_xy_q;
     always @(posedge clk_i) begin
-        if (!rst_ni) ctp_valid_q <= 1'b0;
-        else         ctp_valid_q <= ct_valid;
         if (ct_valid) begin
             ctp_ctx_q  <= ct_ctx;
             ctp_sum_q  <= add_sat(acc_q[ct_ctx], ct_contrib);
@@ -597,10 +657,38 @@ module csgrt_raytree #(
         .orig_i(ev_ct ? {add_sat(acc_q[ctp_ctx_q], ctp_contrib_q), sp_q[ctp_ctx_q] != {SPW{1'b0}},
                          seq_q[ctp_ctx_q][OBW-1:0], y_q[ctp_ctx_q], x_q[ctp_ctx_q]} : {(39 + 1 + OBW + 24){1'b0}}));
 `endif
-    wire [38:0] acc_hp = add_sat(acc_q[h_ctx], hp_bg);
+    wire [38:0] acc_hp = add_sat(acc_q[e_h_ctx], e_hp_bg);
+    // E1's pushes: the records were loaded at the end of E0 (rq_*, spq_data)
+    assign rq_push  = (ev_ch && e_ch_kind == K_SHADOW && e_ch_lit) || (ev_hp && e_h_shadow && !e_sh_ends)
+                      || ev_pop || ev_cam;
+    assign spq_push = ev_hp && !e_h_shadow && e_h_colour_hit && e_want_spawn;
+    // A colour ray's hit is written as it waits at the head of csgrt_hit_prep,
+    // whether or not E0 takes it in that clock (then again, the same values):
+    // its context has nothing else in flight and reads none of it until its
+    // children are spawned, so the write needs no event decision (these
+    // ~1,000 bits at 16 bits hung on it before).
+    wire hit_write = hp_valid && !h_shadow && h_colour_hit;
+    always @(posedge clk_i)
+        if (hit_write) begin
+            w_q[h_ctx]     <= h_w;
+            depth_q[h_ctx] <= h_depth;
+            wr_q[h_ctx]    <= hp_w_r;
+            ho_q[h_ctx]    <= h_o;
+            hd_q[h_ctx]    <= h_d;
+            ht_q[h_ctx]    <= h_t;
+            hcoef_q[h_ctx] <= h_coef;
+            hmat_q[h_ctx]  <= h_mat;
+            hfilt_q[h_ctx] <= h_mat[M_FILTER +: 16];
+            near_q[h_ctx]  <= h_near;
+            run_q[h_ctx]   <= h_run;
+            after_q[h_ctx] <= h_after;
+            wt_q[h_ctx]    <= hp_w_t;
+            tx_q[h_ctx]    <= want_refr;
+        end
+    // the spawn request of a colour hit, loaded at the end of E0 (pushed in E1)
+    always @(posedge clk_i)
+        spq_data <= {h_ior_to, h_ior_from, want_refr, h_ctx, want_refl, light_mask, h_coef, h_t, h_d, h_o};
     always @(posedge clk_i) begin
-        rq_push  <= 1'b0;
-        spq_push <= 1'b0;
         stw_q    <= 1'b0;
         if (!rst_ni) begin
             busy_q     <= {P{1'b0}};
@@ -626,6 +714,7 @@ module csgrt_raytree #(
                 pr_valid_q   <= 1'b0;
                 pop_staged_q <= 1'b1;
             end
+            if (ev0_pop) pop_staged_q <= 1'b0;   // E0 took it
             next_seq_q <= next_seq_d;
             // shading issue
             if (sh_ready_i && sh_valid_q) sh_valid_q <= 1'b0;
@@ -647,92 +736,64 @@ module csgrt_raytree #(
                 end
             end else if (ev_ch) begin
                 // ---- a child of a hit
-                case (ch_kind_i)
+                case (e_ch_kind)
                     K_SHADOW: begin
-                        if (ch_lit_i) begin
-                            rq_push <= 1'b1;   // the record: rq_* below
-                            pend_q[ch_user_i] <= pend_q[ch_user_i] + 1'b1;
-                        end else begin
-                            lcol_q[{ch_user_i, ch_light_i}] <= 48'd0;
-                        end
+                        if (e_ch_lit) pend_q[e_ch_user] <= pend_q[e_ch_user] + 1'b1;   // pushed: rq_push
+                        else          lcol_q[{e_ch_user, e_ch_light}] <= 48'd0;
                     end
                     K_REFLECT, K_REFRACT, K_TIR: begin
                         // a stacked child: one push, its entry chosen by kind (ch_entry)
                         stw_q      <= 1'b1;
-                        stw_addr_q <= stk(ch_user_i, sp_q[ch_user_i]);
-                        stw_data_q <= ch_entry;
-                        sp_q[ch_user_i] <= sp_q[ch_user_i] + 1'b1;
+                        stw_addr_q <= stk(e_ch_user, sp_q[e_ch_user]);
+                        stw_data_q <= e_ch_entry;
+                        sp_q[e_ch_user] <= sp_q[e_ch_user] + 1'b1;
                     end
                     default: ;   // CONTINUE: not asked for
                 endcase
-                if (ch_last_i) begin
-                    spawning_q[ch_user_i] <= 1'b0;
-                    if (pend_q[ch_user_i] == {PW{1'b0}} && !(ch_kind_i == K_SHADOW && ch_lit_i))
-                        shade_q[ch_user_i] <= 1'b1;
+                if (e_ch_last) begin
+                    spawning_q[e_ch_user] <= 1'b0;
+                    if (pend_q[e_ch_user] == {PW{1'b0}} && !(e_ch_kind == K_SHADOW && e_ch_lit))
+                        shade_q[e_ch_user] <= 1'b1;
                 end
             end else if (ev_hp) begin
-                if (!h_shadow) begin
+                if (!e_h_shadow) begin
                     // ---- a colour ray came back
-                    if (!h_colour_hit) begin
-                        acc_q[h_ctx] <= acc_hp;
-                        if (sp_q[h_ctx] != {SPW{1'b0}}) pop_q[h_ctx] <= 1'b1;
+                    if (!e_h_colour_hit) begin
+                        acc_q[e_h_ctx] <= acc_hp;
+                        if (sp_q[e_h_ctx] != {SPW{1'b0}}) pop_q[e_h_ctx] <= 1'b1;
                         else begin
-                            busy_q[h_ctx] <= 1'b0;
-                            ob_valid_q[seq_q[h_ctx][OBW-1:0]] <= 1'b1;
-                            ob_acc_q[seq_q[h_ctx][OBW-1:0]]   <= acc_hp;
-                            ob_xy_q[seq_q[h_ctx][OBW-1:0]]    <= {y_q[h_ctx], x_q[h_ctx]};
+                            busy_q[e_h_ctx] <= 1'b0;
+                            ob_valid_q[seq_q[e_h_ctx][OBW-1:0]] <= 1'b1;
+                            ob_acc_q[seq_q[e_h_ctx][OBW-1:0]]   <= acc_hp;
+                            ob_xy_q[seq_q[e_h_ctx][OBW-1:0]]    <= {y_q[e_h_ctx], x_q[e_h_ctx]};
                         end
                     end else begin
-                        w_q[h_ctx]     <= h_w;
-                        depth_q[h_ctx] <= h_depth;
-                        wr_q[h_ctx]    <= hp_w_r;
-                        ho_q[h_ctx]    <= h_o;
-                        hd_q[h_ctx]    <= h_d;
-                        ht_q[h_ctx]    <= h_t;
-                        hcoef_q[h_ctx] <= h_coef;
-                        hmat_q[h_ctx]  <= h_mat;
-                        hfilt_q[h_ctx] <= h_mat[M_FILTER +: 16];
-                        near_q[h_ctx]  <= h_near;
-                        run_q[h_ctx]   <= h_run;
-                        after_q[h_ctx] <= h_after;
-                        wt_q[h_ctx]    <= hp_w_t;
-                        tx_q[h_ctx]    <= want_refr;
-                        pend_q[h_ctx]  <= {PW{1'b0}};
-                        if (want_spawn) begin
-                            spq_push <= 1'b1;
-                            spq_data <= {h_ior_to, h_ior_from, want_refr, h_ctx, want_refl, light_mask, h_coef, h_t,
-                                         h_d, h_o};
-                            spawning_q[h_ctx] <= 1'b1;
-                        end else begin
-                            shade_q[h_ctx] <= 1'b1;
-                        end
+                        // (the hit itself is written already: hit_write)
+                        pend_q[e_h_ctx] <= {PW{1'b0}};
+                        if (e_want_spawn) spawning_q[e_h_ctx] <= 1'b1;   // requested: spq_push
+                        else              shade_q[e_h_ctx]    <= 1'b1;
                     end
                 end else begin
-                    // ---- a shadow ray came back
-                    if (hp_sh_ends) begin
-                        lcol_q[{h_ctx, h_light}] <= hp_sh_color;
-                        pend_q[h_ctx] <= pend_q[h_ctx] - 1'b1;
-                        if (pend_q[h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[h_ctx])
-                            shade_q[h_ctx] <= 1'b1;
-                    end else begin
-                        rq_push <= 1'b1;   // the shadow ray goes on: rq_* below
+                    // ---- a shadow ray came back (or goes on: rq_push)
+                    if (e_sh_ends) begin
+                        lcol_q[{e_h_ctx, e_h_light}] <= e_sh_color;
+                        pend_q[e_h_ctx] <= pend_q[e_h_ctx] - 1'b1;
+                        if (pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[e_h_ctx])
+                            shade_q[e_h_ctx] <= 1'b1;
                     end
                 end
             end else if (ev_pop) begin
-                // ---- the next colour ray of a context, from its stack
-                rq_push <= 1'b1;   // the popped ray: rq_* below
+                // ---- the next colour ray of a context, from its stack (pushed: rq_push)
                 sp_q[pop_ctx_q]  <= sp_q[pop_ctx_q] - 1'b1;
                 pop_q[pop_ctx_q] <= 1'b0;
-                pop_staged_q     <= 1'b0;
             end else if (ev_cam) begin
-                // ---- a new pixel
-                busy_q[free_ctx] <= 1'b1;
-                x_q[free_ctx]    <= cam_x_i;
-                y_q[free_ctx]    <= cam_y_i;
-                seq_q[free_ctx]  <= next_seq_q;
-                acc_q[free_ctx]  <= 39'd0;
-                sp_q[free_ctx]   <= {SPW{1'b0}};
-                rq_push <= 1'b1;   // the primary ray: rq_* below
+                // ---- a new pixel (its primary ray pushed: rq_push)
+                busy_q[e_free_ctx] <= 1'b1;
+                x_q[e_free_ctx]    <= e_cam_xy[11:0];
+                y_q[e_free_ctx]    <= e_cam_xy[23:12];
+                seq_q[e_free_ctx]  <= next_seq_q;
+                acc_q[e_free_ctx]  <= 39'd0;
+                sp_q[e_free_ctx]   <= {SPW{1'b0}};
             end
             // output buffer retire
             if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
