@@ -306,8 +306,22 @@ module csgrt_spawn #(
     reg [TW-1:0]  h_t_q;
     reg [9*B-1:0] h_coef_q;   // q is not needed
 
-    assign s_ready_o = (cnt_q != CTX_N) && (!h_valid_q || h_ph_q == 2'd2);
+    // s_ready_o is a register (ready_q), loaded with the test of the next
+    // values of the count and the phase: tested on the registers
+    // themselves, the phase's ~200 loads and two LUTs went on through
+    // accept into the hit queue's pointers and these registers' enables
+    // (tools/logic_depth.py). A simulation stops if the two differ.
+    reg           ready_q;
+    wire          h_valid_d = accept || (h_valid_q && h_ph_q != 2'd2);
+    wire [1:0]    h_ph_d    = accept ? 2'd0 : h_valid_q ? h_ph_q + 2'd1 : h_ph_q;
+    wire [CW-1:0] cnt_d     = cnt_q + {{(CW-1){1'b0}}, accept} - {{(CW-1){1'b0}}, seq_load};
+    assign s_ready_o = ready_q;
     assign accept    = s_valid_i && s_ready_o;
+`ifndef SYNTHESIS
+    csgrt_check_same #(.WHAT("s_ready_o")) u_check_ready (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(ready_q),
+        .orig_i((cnt_q != CTX_N) && (!h_valid_q || h_ph_q == 2'd2)));
+`endif
     wire unused_q    = ^s_coef_i[9*B +: B];
 
     always @(posedge clk_i) begin
@@ -315,15 +329,12 @@ module csgrt_spawn #(
             h_valid_q <= 1'b0;
             h_ph_q    <= 2'd0;
             cnt_q     <= {CW{1'b0}};
+            ready_q   <= 1'b1;
         end else begin
-            if (accept) begin
-                h_valid_q <= 1'b1;
-                h_ph_q    <= 2'd0;
-            end else if (h_valid_q) begin
-                h_ph_q <= h_ph_q + 2'd1;
-                if (h_ph_q == 2'd2) h_valid_q <= 1'b0;
-            end
-            cnt_q <= cnt_q + {{(CW-1){1'b0}}, accept} - {{(CW-1){1'b0}}, seq_load};
+            h_valid_q <= h_valid_d;
+            h_ph_q    <= h_ph_d;
+            cnt_q     <= cnt_d;
+            ready_q   <= (cnt_d != CTX_N) && (!h_valid_d || h_ph_d == 2'd2);
         end
         if (accept) begin
             h_o_q    <= s_o_i;
