@@ -153,12 +153,15 @@ module csgrt_dispatch #(
             wire [NUM_UNITS-1:0] room, here;
             for (k = 0; k < NUM_UNITS; k = k + 1) begin : g_lane_info
                 assign here[k] = (fill_count_q == k);
-                // the head in a fabric register (HEAD_REG 1): the sorter
-                // computes the ray's origin flags from it at once, which
-                // started at the block RAM's read port (about 5 ns); the
-                // info is read a pipeline's length after it is written, so
-                // the extra clock of latency is hidden
-                csgrt_fifo_block #(.WIDTH(INFO_W), .DEPTH(INFO_DEPTH), .HEAD_REG(1)) u_info (
+                // the head in fabric registers: the sorter computes the
+                // ray's origin flags from it at once, which started at the
+                // block RAM's read port (about 5 ns); the info is read a
+                // pipeline's length after it is written, so the extra clock
+                // of latency is hidden. A skid buffer (HEAD_REG 3), so that
+                // the pop, which comes with the ray's last leaf at the end
+                // of the sorter -> isect -> walker handshake, stops at its
+                // two words instead of running on into the RAM's pointers
+                csgrt_fifo_block #(.WIDTH(INFO_W), .DEPTH(INFO_DEPTH), .HEAD_REG(3)) u_info (
                     .clk_i, .rst_ni,
                     .valid_i (accept && here[k]), .ready_o (room[k]), .data_i (info_i),
                     .valid_o (info_valid_o[k]), .ready_i (info_ready_i[k]), .data_o (info_o[k*INFO_W +: INFO_W]));

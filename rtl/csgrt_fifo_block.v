@@ -33,6 +33,16 @@
 //     take a word every 2 clocks or less often and decide late in the clock:
 //     csgrt_hit_prep's record queue (a record per hit, II clocks apart,
 //     taken by the ray tree's event selection).
+//   HEAD_REG = 3: the head in a csgrt_skid after the RAM's read register:
+//     every enable on the RAM's side decided by registers (the skid's
+//     ready_o is one), and still a word per clock; ready_i reaches only the
+//     skid's two words. Latency 3 clocks, capacity DEPTH + 3. For
+//     consumers that take a word per clock and decide late in the clock:
+//     csgrt_dispatch's info queues, popped with a ray's last leaf at the
+//     end of the handshake chain from the event sorter through the
+//     intersection unit and the walker (with HEAD_REG 1 that ready went on
+//     through the head's load, the read register's and the RAM's read
+//     enable into the pointers: tools/logic_depth.py's longest path).
 // The RAM reads only entries written at an earlier edge and writes only
 // entries that are not about to be read (the read pointer trails the write
 // pointer and a full RAM takes no write), so a read never meets a write at
@@ -40,7 +50,7 @@
 module csgrt_fifo_block #(
     parameter WIDTH = 8,    // payload bits
     parameter DEPTH = 16,   // RAM entries, a power of two >= 2
-    parameter HEAD_REG = 0  // 1, 2: the head word in a fabric register (above)
+    parameter HEAD_REG = 0  // 1, 2, 3: the head word in fabric registers (above)
 ) (
     input  wire             clk_i,
     input  wire             rst_ni,    // synchronous, active low
@@ -77,7 +87,19 @@ module csgrt_fifo_block #(
     end
 
     generate
-        if (HEAD_REG != 0) begin : g_head_reg
+        if (HEAD_REG == 3) begin : g_head_skid
+            wire skid_ready;
+            wire unused_ready_next;
+            assign rd_free = !rd_valid_q || skid_ready;
+            csgrt_skid #(.WIDTH(WIDTH)) u_head (
+                .clk_i, .rst_ni, .valid_i(rd_valid_q), .ready_o(skid_ready), .ready_next_o(unused_ready_next),
+                .data_i(rd_data_q), .valid_o(valid_o), .ready_i(ready_i), .data_o(data_o));
+            always @(posedge clk_i) begin
+                if (!rst_ni)         rd_valid_q <= 1'b0;
+                else if (load)       rd_valid_q <= 1'b1;
+                else if (skid_ready) rd_valid_q <= 1'b0;
+            end
+        end else if (HEAD_REG != 0) begin : g_head_reg
             // the head in the fabric, loaded from the read register when
             // it is free (HEAD_REG 2: when it is empty, so that no enable
             // here depends on ready_i)
@@ -113,8 +135,8 @@ module csgrt_fifo_block #(
     endgenerate
 
     initial begin
-        if (DEPTH < 2 || (1 << AW) != DEPTH || HEAD_REG < 0 || HEAD_REG > 2) begin
-            $display("%m: DEPTH (%0d) must be a power of two >= 2, HEAD_REG (%0d) 0, 1 or 2", DEPTH, HEAD_REG);
+        if (DEPTH < 2 || (1 << AW) != DEPTH || HEAD_REG < 0 || HEAD_REG > 3) begin
+            $display("%m: DEPTH (%0d) must be a power of two >= 2, HEAD_REG (%0d) 0 to 3", DEPTH, HEAD_REG);
             $finish;
         end
     end

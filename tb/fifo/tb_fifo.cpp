@@ -3,10 +3,11 @@
 // every word comes out once, in order, under random input gaps and random
 // output back-pressure (tb::run_stream); the latency from acceptance to
 // valid_o is 1 clock for csgrt_fifo, 2 for csgrt_fifo_block and 3 for it with
-// HEAD_REG 1 or 2; with the output held off they take DEPTH, DEPTH + 1 and
-// DEPTH + 2 words and then refuse; and a full queue drains at one word per
-// clock (with HEAD_REG 2 one word per 2 clocks, the price of its registered
-// enables).
+// HEAD_REG 1, 2 or 3; with the output held off they take DEPTH, DEPTH + 1,
+// DEPTH + 2 (HEAD_REG 1, 2) and DEPTH + 3 (HEAD_REG 3, a skid buffer after the
+// read register) words and then refuse; and a full queue drains at one word
+// per clock (with HEAD_REG 2 one word per 2 clocks, the price of its
+// registered enables).
 #include "Vtb_fifo.h"
 #include "stream.h"
 
@@ -49,6 +50,10 @@ Dut hr2(Top* t) {
     return {{&t->clk_i, &t->rst_ni, &t->hr2_valid_i, &t->hr2_ready_o, &t->hr2_valid_o, &t->hr2_ready_i},
             &t->hr2_data_i, &t->hr2_data_o, 3, kDepth + 2, 2};
 }
+Dut hr3(Top* t) {
+    return {{&t->clk_i, &t->rst_ni, &t->hr3_valid_i, &t->hr3_ready_o, &t->hr3_valid_o, &t->hr3_ready_i},
+            &t->hr3_data_i, &t->hr3_data_o, 3, kDepth + 3, 1};
+}
 
 Dut hold(Top* t) {
     return {{&t->clk_i, &t->rst_ni, &t->hold_valid_i, &t->hold_ready_o, &t->hold_valid_o, &t->hold_ready_i},
@@ -69,8 +74,8 @@ void tick(Top* t) {
     t->eval();
 }
 void reset(Top* t) {
-    t->lut_valid_i = t->blk_valid_i = t->hr1_valid_i = t->hr2_valid_i = t->hold_valid_i = 0;
-    t->lut_ready_i = t->blk_ready_i = t->hr1_ready_i = t->hr2_ready_i = t->hold_ready_i = 0;
+    t->lut_valid_i = t->blk_valid_i = t->hr1_valid_i = t->hr2_valid_i = t->hr3_valid_i = t->hold_valid_i = 0;
+    t->lut_ready_i = t->blk_ready_i = t->hr1_ready_i = t->hr2_ready_i = t->hr3_ready_i = t->hold_ready_i = 0;
     t->clk_i = 0;
     t->rst_ni = 0;
     t->eval();
@@ -115,6 +120,7 @@ TEST(Fifo, LutRamStreamsInOrder) { stream(lut, "csgrt_fifo"); }
 TEST(Fifo, BlockRamStreamsInOrder) { stream(blk, "csgrt_fifo_block"); }
 TEST(Fifo, BlockRamHeadReg1StreamsInOrder) { stream(hr1, "fifo_block HR 1"); }
 TEST(Fifo, BlockRamHeadReg2StreamsInOrder) { stream(hr2, "fifo_block HR 2"); }
+TEST(Fifo, BlockRamHeadReg3StreamsInOrder) { stream(hr3, "fifo_block HR 3"); }
 TEST(Fifo, HoldStreamsInOrder) { stream(hold, "csgrt_hold"); }
 
 // With ready_i low the queue takes exactly its capacity, then refuses; then
@@ -162,6 +168,7 @@ TEST(Fifo, LutRamCapacity) { fill_and_drain(lut, "csgrt_fifo"); }
 TEST(Fifo, BlockRamCapacity) { fill_and_drain(blk, "csgrt_fifo_block"); }
 TEST(Fifo, BlockRamHeadReg1Capacity) { fill_and_drain(hr1, "fifo_block HR 1"); }
 TEST(Fifo, BlockRamHeadReg2Capacity) { fill_and_drain(hr2, "fifo_block HR 2"); }
+TEST(Fifo, BlockRamHeadReg3Capacity) { fill_and_drain(hr3, "fifo_block HR 3"); }
 TEST(Fifo, HoldCapacity) { fill_and_drain(hold, "csgrt_hold"); }
 
 }  // namespace

@@ -1,6 +1,6 @@
 `default_nettype none
 // tb_fifo — Verilator top for tb_fifo.cpp: csgrt_fifo (LUT RAM, latency 1)
-// and csgrt_fifo_block (block RAM, latency 2; with HEAD_REG 1 and 2, latency
+// and csgrt_fifo_block (block RAM, latency 2; with HEAD_REG 1, 2 and 3, latency
 // 3), side by side with their own handshakes, WIDTH bits wide and DEPTH entries deep;
 // and csgrt_hold, the one-word register slice (latency 1, a word per 2 clocks).
 module tb_fifo #(
@@ -37,6 +37,13 @@ module tb_fifo #(
     output wire             hr2_valid_o,
     input  wire             hr2_ready_i,
     output wire [WIDTH-1:0] hr2_data_o,
+    // csgrt_fifo_block with HEAD_REG = 3
+    input  wire             hr3_valid_i,
+    output wire             hr3_ready_o,
+    input  wire [WIDTH-1:0] hr3_data_i,
+    output wire             hr3_valid_o,
+    input  wire             hr3_ready_i,
+    output wire [WIDTH-1:0] hr3_data_o,
     // csgrt_hold
     input  wire             hold_valid_i,
     output wire             hold_ready_o,
@@ -57,6 +64,9 @@ module tb_fifo #(
     csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH), .HEAD_REG(2)) u_hr2 (
         .clk_i, .rst_ni, .valid_i(hr2_valid_i), .ready_o(hr2_ready_o), .data_i(hr2_data_i),
         .valid_o(hr2_valid_o), .ready_i(hr2_ready_i), .data_o(hr2_data_o));
+    csgrt_fifo_block #(.WIDTH(WIDTH), .DEPTH(DEPTH), .HEAD_REG(3)) u_hr3 (
+        .clk_i, .rst_ni, .valid_i(hr3_valid_i), .ready_o(hr3_ready_o), .data_i(hr3_data_i),
+        .valid_o(hr3_valid_o), .ready_i(hr3_ready_i), .data_o(hr3_data_o));
     csgrt_hold #(.WIDTH(WIDTH)) u_hold (
         .clk_i, .rst_ni, .valid_i(hold_valid_i), .ready_o(hold_ready_o), .data_i(hold_data_i),
         .valid_o(hold_valid_o), .ready_i(hold_ready_i), .data_o(hold_data_o));
