@@ -141,6 +141,15 @@ module csgrt_scene_loader #(
     reg         tree_first_q, tree_op_q, tree_leaf_ok_q;   // tree_r == 0, 1 <= tree_r <= SLOTS, tree_leaf < MAX_LEAVES
     reg  [TREE_HEIGHT-1:0] op_pos_q;                      // heap position - 1 (1 <= tree_r <= SLOTS)
     reg  [LEAF_BITS-1:0]   tree_leaf_q;
+    // The word's checks, made in stage 0 and applied to error_o in stage 1:
+    // a header word's code (s1_err_q, 0: fine) and the tree's height
+    // (s1_bad_height_q). Made on stage 1's word, the height's 32-bit compare
+    // hung on s1_w_q, whose loads (every configuration register) spread
+    // across the die, and ran on into error_o: the routed effects build's
+    // critical path (docs/fpga.md). A load is not timing-critical; its
+    // registers are.
+    reg  [3:0]             s1_err_q;
+    reg                    s1_bad_height_q;
     wire [31:0] cam_r = s1_cam_r_q;
     wire [3:0] section_size = in_lights_q ? LIGHT_WORDS[3:0] : in_materials_q ? MATERIAL_WORDS[3:0] : LEAF_WORDS[3:0];
     wire [31:0] w = s1_w_q;   // stage 1's word
@@ -197,19 +206,21 @@ module csgrt_scene_loader #(
                 tree_leaf_ok_q  <= tree_leaf0 < MAX_LEAVES;
                 op_pos_q        <= tree_r0[TREE_HEIGHT-1:0] - 1'b1;
                 tree_leaf_q     <= tree_leaf0[LEAF_BITS-1:0];
+                s1_err_q        <= 4'd0;
+                s1_bad_height_q <= word_i != TREE_HEIGHT;
                 if (idx_q < HEADER_WORDS) begin
                     case (idx_q)
-                        H_MAGIC:         if (word_i != MAGIC) error_o <= 4'd1;
-                        H_VERSION:       if (word_i != VERSION) error_o <= 4'd1;
-                        H_BITS:          if (word_i != BITS) error_o <= 4'd2;
+                        H_MAGIC:         if (word_i != MAGIC) s1_err_q <= 4'd1;
+                        H_VERSION:       if (word_i != VERSION) s1_err_q <= 4'd1;
+                        H_BITS:          if (word_i != BITS) s1_err_q <= 4'd2;
                         H_SIZE:          begin width_o <= word_i[11:0]; height_o <= word_i[27:16]; end
                         H_LEAVES:        begin
-                                             if (word_i > MAX_LEAVES) error_o <= 4'd3;
+                                             if (word_i > MAX_LEAVES) s1_err_q <= 4'd3;
                                              num_leaves_o <= word_i[LEAF_BITS:0];
                                          end
-                        H_MATERIALS:     if (word_i > MAX_MATERIALS + 1) error_o <= 4'd4;
+                        H_MATERIALS:     if (word_i > MAX_MATERIALS + 1) s1_err_q <= 4'd4;
                         H_LIGHTS:        begin
-                                             if (word_i > MAX_LIGHTS) error_o <= 4'd4;
+                                             if (word_i > MAX_LIGHTS) s1_err_q <= 4'd4;
                                              num_lights_o <= word_i[3:0];
                                          end
                         H_MAX_TRACE:     max_trace_o     <= (word_i > 32'd255) ? 8'd255 : word_i[7:0];
@@ -228,6 +239,7 @@ module csgrt_scene_loader #(
             if (s1_valid_q) begin
                 // ---- stage 1: the sections' writes
                 if (s1_last_q) loaded_o <= 1'b1;
+                if (s1_err_q != 4'd0) error_o <= s1_err_q;   // a header word's check
 
                 // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3)
                 if (in_camera_q) begin
@@ -296,7 +308,7 @@ module csgrt_scene_loader #(
                 // ---- tree: height, 2^H operators, one slot per leaf
                 if (in_tree_q) begin
                     if (tree_first_q) begin
-                        if (w != TREE_HEIGHT) error_o <= 4'd5;
+                        if (s1_bad_height_q) error_o <= 4'd5;
                     end else if (tree_op_q) begin
                         for (j = 0; j < SLOTS; j = j + 1)
                             if (op32 == j) node_op_o[j * 2 +: 2] <= w[1:0];
