@@ -38,11 +38,12 @@
 //                  a != 0: t_first = (qq << F) / a, t_second = (c << F) / qq
 //                  a == 0: t = -(c << F) / (2 b)     (linear along the ray)
 //   P8 div  (F+2) two csgrt_div_core in lock step
-//   P9 out  (0)  saturation to NegInf/PosInf, qq == 0 (double root: second
-//                event = first), drop of an equal pair, count; into the skid
+//   P9 t    (1)  saturation to NegInf/PosInf, the sign, qq == 0 (double
+//                root: second event = first)
+//   P10 out (0)  drop of an equal pair, count; into the skid
 //   skid    (1)  csgrt_skid
-// Latency: 2F+19 clocks without back-pressure (BITS 12: 37, 16: 45, 24: 61,
-// 32: 77). Throughput: one ray-primitive pair per clock.
+// Latency: 2F+20 clocks without back-pressure (BITS 12: 38, 16: 46, 24: 62,
+// 32: 78). Throughput: one ray-primitive pair per clock.
 // Handshake: valid/ready on both sides, a transaction moves when valid and
 // ready are both high at a rising edge. All stages advance on one global
 // enable, the output skid buffer's registered ready, which is also ready_o:
@@ -382,13 +383,12 @@ module csgrt_isect #(
         .num_i(p7_num1_q), .den_i(p7_den1_q), .user_i(1'b0),
         .valid_o(unused_v1), .quot_o(q1_mag), .neg_o(q1_neg), .ovf_o(q1_ovf), .user_o(unused_u1));
 
-    // ---- P9: events (combinational into the skid buffer) ---------------------
-    wire [AW-1:0]  o_a      = p8_side[0 +: AW];
-    wire [BW-1:0]  o_b      = p8_side[AW +: BW];
-    wire [CW-1:0]  o_c      = p8_side[AW+BW +: CW];
-    wire [LW-1:0]  o_leaf   = p8_side[AW+BW+CW +: LW];
-    wire [FLW-1:0] o_flags  = p8_side[AW+BW+CW+LW +: FLW];
-    wire           o_qq_zero = p8_side[SBW];
+    // ---- P9: the events' t and range, registered ------------------------------
+    // (The quotients' sign and the equal-pair test after it were one path
+    // from the dividers' output registers into the skid buffer: the routed
+    // effects build's critical path, 11.71 ns, 4.59 of them the route from
+    // the dividers to the skid; docs/fpga.md.)
+    wire           p8_qq_zero = p8_side[SBW];
     wire o_a_zero   = o_flags[0];
     wire o_b_zero   = o_flags[1];
     wire o_b_neg    = o_flags[2];
@@ -404,10 +404,33 @@ module csgrt_isect #(
     wire [1:0]    r0_div = q0_ovf ? (q0_neg ? R_NEGINF : R_POSINF) : R_FINITE;
     wire [1:0]    r1_div = q1_ovf ? (q1_neg ? R_NEGINF : R_POSINF) : R_FINITE;
     // qq == 0 (b = s = 0, so c = 0): a double root at 0, second = first
-    wire [TW-1:0] t1_q = o_qq_zero ? t0_div : t1_div;
-    wire [1:0]    r1_q = o_qq_zero ? r0_div : r1_div;
+    wire [TW-1:0] t1_q = p8_qq_zero ? t0_div : t1_div;
+    wire [1:0]    r1_q = p8_qq_zero ? r0_div : r1_div;
+    reg            p9_valid_q;
+    reg [TW-1:0]   p9_t0_q, p9_t1_q;
+    reg [1:0]      p9_r0_q, p9_r1_q;
+    reg [SB7W-1:0] p9_side_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni)  p9_valid_q <= 1'b0;
+        else if (en)  p9_valid_q <= p8_valid;
+        if (en) begin
+            p9_t0_q   <= t0_div;
+            p9_t1_q   <= t1_q;
+            p9_r0_q   <= r0_div;
+            p9_r1_q   <= r1_q;
+            p9_side_q <= p8_side;
+        end
+    end
+
+    // ---- P10: events (combinational into the skid buffer) --------------------
+    wire [AW-1:0]  o_a      = p9_side_q[0 +: AW];
+    wire [BW-1:0]  o_b      = p9_side_q[AW +: BW];
+    wire [CW-1:0]  o_c      = p9_side_q[AW+BW +: CW];
+    wire [LW-1:0]  o_leaf   = p9_side_q[AW+BW+CW +: LW];
+    wire [FLW-1:0] o_flags  = p9_side_q[AW+BW+CW+LW +: FLW];
+    wire           unused_qq_zero = p9_side_q[SBW];
     // drop_equal_pair(): two events on the same t cross nothing
-    wire          equal_pair = (r0_div == r1_q) && (r0_div != R_FINITE || t0_div == t1_q);
+    wire          equal_pair = (p9_r0_q == p9_r1_q) && (p9_r0_q != R_FINITE || p9_t0_q == p9_t1_q);
 
     reg [1:0]    count_d;
     reg          inside_d, enter0_d, enter1_d;
@@ -432,8 +455,8 @@ module csgrt_isect #(
                 // linear: Q = 2 b t + c, entering where Q decreases
                 inside_d = !o_b_neg;
                 count_d  = 2'd1;
-                t0_d     = t0_div;
-                range0_d = r0_div;
+                t0_d     = p9_t0_q;
+                range0_d = p9_r0_q;
                 enter0_d = o_b_neg;
             end
             default: begin
@@ -441,11 +464,11 @@ module csgrt_isect #(
                 inside_d = o_a_neg;
                 if (!o_disc_neg) begin
                     count_d  = equal_pair ? 2'd0 : 2'd2;
-                    t0_d     = t0_div;
-                    range0_d = r0_div;
+                    t0_d     = p9_t0_q;
+                    range0_d = p9_r0_q;
                     enter0_d = !o_b_neg;
-                    t1_d     = t1_q;
-                    range1_d = r1_q;
+                    t1_d     = p9_t1_q;
+                    range1_d = p9_r1_q;
                     enter1_d = o_b_neg;
                 end
             end
@@ -457,7 +480,7 @@ module csgrt_isect #(
     csgrt_skid #(.WIDTH(OUTW)) u_skid (
         .clk_i  (clk_i),
         .rst_ni (rst_ni),
-        .valid_i(p8_valid),
+        .valid_i(p9_valid_q),
         .ready_o(en),
         .ready_next_o(en_next),
         .data_i ({o_leaf, count_d, t0_d, range0_d, enter0_d, t1_d, range1_d, enter1_d, inside_d,
