@@ -409,7 +409,7 @@ module csgrt_isect #(
     reg            p9_valid_q;
     reg [TW-1:0]   p9_t0_q, p9_t1_q;
     reg [1:0]      p9_r0_q, p9_r1_q;
-    reg [SB7W-1:0] p9_side_q;
+    reg [SBW-1:0]  p9_side_q;          // the sideband without qq == 0 (used in P9)
     always @(posedge clk_i) begin
         if (!rst_ni)  p9_valid_q <= 1'b0;
         else if (en)  p9_valid_q <= p8_valid;
@@ -418,7 +418,7 @@ module csgrt_isect #(
             p9_t1_q   <= t1_q;
             p9_r0_q   <= r0_div;
             p9_r1_q   <= r1_q;
-            p9_side_q <= p8_side;
+            p9_side_q <= p8_side[SBW-1:0];
         end
     end
 
@@ -428,7 +428,6 @@ module csgrt_isect #(
     wire [CW-1:0]  o_c      = p9_side_q[AW+BW +: CW];
     wire [LW-1:0]  o_leaf   = p9_side_q[AW+BW+CW +: LW];
     wire [FLW-1:0] o_flags  = p9_side_q[AW+BW+CW+LW +: FLW];
-    wire           unused_qq_zero = p9_side_q[SBW];
     // drop_equal_pair(): two events on the same t cross nothing
     wire          equal_pair = (p9_r0_q == p9_r1_q) && (p9_r0_q != R_FINITE || p9_t0_q == p9_t1_q);
 
