@@ -33,10 +33,10 @@
 //     take a word every 2 clocks or less often and decide late in the clock:
 //     csgrt_hit_prep's record queue (a record per hit, II clocks apart,
 //     taken by the ray tree's event selection).
-//   HEAD_REG = 3: the head in a csgrt_skid after the RAM's read register:
-//     every enable on the RAM's side decided by registers (the skid's
-//     ready_o is one), and still a word per clock; ready_i reaches only the
-//     skid's two words. Latency 3 clocks, capacity DEPTH + 3. For
+//   HEAD_REG = 3: the head in a two-word csgrt_pingpong after the RAM's
+//     read register: every enable on the RAM's side decided by registers
+//     (the ping-pong's ready_o is one), and still a word per clock; ready_i
+//     reaches only the ping-pong's pointers, not the words' enables. Latency 3 clocks, capacity DEPTH + 3. For
 //     consumers that take a word per clock and decide late in the clock:
 //     csgrt_dispatch's info queues, popped with a ray's last leaf at the
 //     end of the handshake chain from the event sorter through the
@@ -91,7 +91,7 @@ module csgrt_fifo_block #(
             wire skid_ready;
             wire unused_ready_next;
             assign rd_free = !rd_valid_q || skid_ready;
-            csgrt_skid #(.WIDTH(WIDTH)) u_head (
+            csgrt_pingpong #(.WIDTH(WIDTH)) u_head (
                 .clk_i, .rst_ni, .valid_i(rd_valid_q), .ready_o(skid_ready), .ready_next_o(unused_ready_next),
                 .data_i(rd_data_q), .valid_o(valid_o), .ready_i(ready_i), .data_o(data_o));
             always @(posedge clk_i) begin

@@ -33,7 +33,7 @@
 //   X2 mul (2)  w ft; atten ft
 //   X3 reg (1)  the shadow ray's decision and final attenuation
 //   X4 mul (2)  light colour x attenuation
-//   skid (1)
+//   skid (1)   csgrt_pingpong
 // Latency 9 clocks; one record per clock. The record's other fields (ray,
 // hit, material, flags) wait in a FIFO beside the pipeline and come out
 // with the results. Multipliers: 3 + 9 + 6 + 3 = 21.
@@ -304,7 +304,13 @@ module csgrt_hit_prep #(
     localparam OW = ZW + 48;
     wire [OW-1:0] out_w;
     wire          out_valid;
-    csgrt_skid #(.WIDTH(OW)) u_skid (
+    // csgrt_pingpong, not csgrt_skid: m_ready_i is the ray tree's event
+    // choice, decided late in the clock from the spawn unit's valid; with
+    // a skid's output register it went on into every result bit's enable
+    // (some 300 at 16 bits), and from there through ready_next_o into the
+    // beat (tools/logic_depth.py's second-longest path, 14.66 ns). Here it
+    // moves two pointers.
+    csgrt_pingpong #(.WIDTH(OW)) u_skid (
         .clk_i, .rst_ni, .valid_i(x4_valid && last), .ready_o(en), .ready_next_o(en_next), .data_i({sc, x4_z}),
         .valid_o(out_valid), .ready_i(m_ready_i), .data_o(out_w));
     wire          rec_valid;

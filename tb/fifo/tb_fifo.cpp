@@ -4,10 +4,13 @@
 // output back-pressure (tb::run_stream); the latency from acceptance to
 // valid_o is 1 clock for csgrt_fifo, 2 for csgrt_fifo_block and 3 for it with
 // HEAD_REG 1, 2 or 3; with the output held off they take DEPTH, DEPTH + 1,
-// DEPTH + 2 (HEAD_REG 1, 2) and DEPTH + 3 (HEAD_REG 3, a skid buffer after the
+// DEPTH + 2 (HEAD_REG 1, 2) and DEPTH + 3 (HEAD_REG 3, a two-word csgrt_pingpong after the
 // read register) words and then refuse; and a full queue drains at one word
 // per clock (with HEAD_REG 2 one word per 2 clocks, the price of its
-// registered enables).
+// registered enables). The two-word slices csgrt_skid and csgrt_pingpong
+// meet the same contract (latency 1, two words, a word per clock), and
+// under one random stream of valid, ready and data they agree on every
+// handshake output at every clock, ready_next_o included.
 #include "Vtb_fifo.h"
 #include "stream.h"
 
@@ -55,6 +58,15 @@ Dut hr3(Top* t) {
             &t->hr3_data_i, &t->hr3_data_o, 3, kDepth + 3, 1};
 }
 
+Dut skid(Top* t) {
+    return {{&t->clk_i, &t->rst_ni, &t->skid_valid_i, &t->skid_ready_o, &t->skid_valid_o, &t->skid_ready_i},
+            &t->skid_data_i, &t->skid_data_o, 1, 2, 1};
+}
+Dut pp(Top* t) {
+    return {{&t->clk_i, &t->rst_ni, &t->pp_valid_i, &t->pp_ready_o, &t->pp_valid_o, &t->pp_ready_i},
+            &t->pp_data_i, &t->pp_data_o, 1, 2, 1};
+}
+
 Dut hold(Top* t) {
     return {{&t->clk_i, &t->rst_ni, &t->hold_valid_i, &t->hold_ready_o, &t->hold_valid_o, &t->hold_ready_i},
             &t->hold_data_i, &t->hold_data_o, 1, 1, 2};
@@ -76,6 +88,7 @@ void tick(Top* t) {
 void reset(Top* t) {
     t->lut_valid_i = t->blk_valid_i = t->hr1_valid_i = t->hr2_valid_i = t->hr3_valid_i = t->hold_valid_i = 0;
     t->lut_ready_i = t->blk_ready_i = t->hr1_ready_i = t->hr2_ready_i = t->hr3_ready_i = t->hold_ready_i = 0;
+    t->skid_valid_i = t->pp_valid_i = t->skid_ready_i = t->pp_ready_i = 0;
     t->clk_i = 0;
     t->rst_ni = 0;
     t->eval();
@@ -122,6 +135,8 @@ TEST(Fifo, BlockRamHeadReg1StreamsInOrder) { stream(hr1, "fifo_block HR 1"); }
 TEST(Fifo, BlockRamHeadReg2StreamsInOrder) { stream(hr2, "fifo_block HR 2"); }
 TEST(Fifo, BlockRamHeadReg3StreamsInOrder) { stream(hr3, "fifo_block HR 3"); }
 TEST(Fifo, HoldStreamsInOrder) { stream(hold, "csgrt_hold"); }
+TEST(Fifo, SkidStreamsInOrder) { stream(skid, "csgrt_skid"); }
+TEST(Fifo, PingpongStreamsInOrder) { stream(pp, "csgrt_pingpong"); }
 
 // With ready_i low the queue takes exactly its capacity, then refuses; then
 // it gives the words back in order at one per clock.
@@ -170,5 +185,45 @@ TEST(Fifo, BlockRamHeadReg1Capacity) { fill_and_drain(hr1, "fifo_block HR 1"); }
 TEST(Fifo, BlockRamHeadReg2Capacity) { fill_and_drain(hr2, "fifo_block HR 2"); }
 TEST(Fifo, BlockRamHeadReg3Capacity) { fill_and_drain(hr3, "fifo_block HR 3"); }
 TEST(Fifo, HoldCapacity) { fill_and_drain(hold, "csgrt_hold"); }
+TEST(Fifo, SkidCapacity) { fill_and_drain(skid, "csgrt_skid"); }
+TEST(Fifo, PingpongCapacity) { fill_and_drain(pp, "csgrt_pingpong"); }
+
+// csgrt_pingpong replaces csgrt_skid where the consumer's ready comes late:
+// the two must be interchangeable, so both get the same valid_i, data_i and
+// ready_i at every clock (the producer offering words as a valid/ready
+// source does: a word stays offered until taken), with resets now and then,
+// and every output must agree.
+TEST(Fifo, PingpongBehavesAsSkid) {
+    tb::Harness<Top> h;
+    Top* t = h.top.get();
+    reset(t);
+    std::mt19937_64 rng(tb::seed(23));
+    const long clocks = long(200000 * tb::scale()) + 1000;
+    bool offered = false;
+    uint64_t word = 0;
+    long moved = 0;
+    for (long c = 0; c < clocks; ++c) {
+        const bool in_reset = (rng() % 5000) == 0;
+        t->rst_ni = !in_reset;
+        if (!offered && rng() % 4 != 0) {
+            offered = true;
+            word = rng() & kMask;
+        }
+        t->skid_valid_i = t->pp_valid_i = offered;
+        t->skid_data_i = t->pp_data_i = word;
+        t->skid_ready_i = t->pp_ready_i = (rng() % 3 != 0);
+        t->eval();
+        ASSERT_EQ(t->skid_ready_o, t->pp_ready_o) << "clock " << c;
+        ASSERT_EQ(t->skid_ready_next_o, t->pp_ready_next_o) << "clock " << c;
+        ASSERT_EQ(t->skid_valid_o, t->pp_valid_o) << "clock " << c;
+        if (t->skid_valid_o) ASSERT_EQ(t->skid_data_o & kMask, t->pp_data_o & kMask) << "clock " << c;
+        if (!in_reset && offered && t->skid_ready_o) offered = false;
+        if (!in_reset && t->skid_valid_o && t->skid_ready_i) ++moved;
+        tick(t);
+    }
+    // the stream moved (neither side stuck at empty or full)
+    EXPECT_GT(moved, clocks / 3);
+    std::printf("[ fifo     ] csgrt_pingpong and csgrt_skid agreed for %ld clocks, %ld words\n", clocks, moved);
+}
 
 }  // namespace
