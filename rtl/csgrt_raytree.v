@@ -481,7 +481,6 @@ module csgrt_raytree #(
     reg  [KW-1:0] e_h_light;
     reg           e_h_shadow, e_h_colour_hit, e_want_spawn, e_sh_ends;
     reg  [47:0]   e_sh_color;
-    reg  [38:0]   e_hp_bg;
     reg  [CB-1:0] e_free_ctx;
     reg  [23:0]   e_cam_xy;
     always @(posedge clk_i) begin
@@ -498,7 +497,6 @@ module csgrt_raytree #(
         e_want_spawn   <= want_spawn;
         e_sh_ends      <= hp_sh_ends;
         e_sh_color     <= hp_sh_color;
-        e_hp_bg        <= hp_bg;
         e_free_ctx     <= free_ctx;
         e_cam_xy       <= {cam_y_i, cam_x_i};
     end
@@ -657,7 +655,38 @@ module csgrt_raytree #(
         .orig_i(ev_ct ? {add_sat(acc_q[ctp_ctx_q], ctp_contrib_q), sp_q[ctp_ctx_q] != {SPW{1'b0}},
                          seq_q[ctp_ctx_q][OBW-1:0], y_q[ctp_ctx_q], x_q[ctp_ctx_q]} : {(39 + 1 + OBW + 24){1'b0}}));
 `endif
-    wire [38:0] acc_hp = add_sat(acc_q[e_h_ctx], e_hp_bg);
+    // The same for a colour ray's miss, in E0 from the hit at hit_prep's
+    // head (hpp_*, loaded on every clock): the accumulator read at the
+    // ray's context, the background's saturating add, the stack test and
+    // the output buffer slot and pixel. In E1 they went from ev_hp through
+    // the context memories' reads and the add into the output buffer's
+    // write address and data (tools/logic_depth.py: 14.46 ns). A traced
+    // colour ray's context has nothing else in flight, and E1 writes its
+    // state only at events of that context (its own pixel started long
+    // before the ray reached the head; its contribution and pops come
+    // after this event), so the E0 read sees what E1 would; a simulation
+    // check compares them.
+    reg  [38:0]    hpp_sum_q;
+    reg            hpp_more_q;
+    reg  [OBW-1:0] hpp_slot_q;
+    reg  [23:0]    hpp_xy_q;
+    always @(posedge clk_i) begin
+        hpp_sum_q  <= add_sat(acc_q[h_ctx], hp_bg);
+        hpp_more_q <= sp_q[h_ctx] != {SPW{1'b0}};
+        hpp_slot_q <= seq_q[h_ctx][OBW-1:0];
+        hpp_xy_q   <= {y_q[h_ctx], x_q[h_ctx]};
+    end
+`ifndef SYNTHESIS
+    reg [38:0] e_hp_bg;
+    always @(posedge clk_i) e_hp_bg <= hp_bg;
+    csgrt_check_same #(.WIDTH(39 + 1 + OBW + 24), .WHAT("a colour miss's early sum, slot, pixel and stack test")) u_check_hpp (
+        .clk_i, .rst_ni,
+        .copy_i(ev_hp && !e_h_shadow && !e_h_colour_hit ? {hpp_sum_q, hpp_more_q, hpp_slot_q, hpp_xy_q}
+                                                        : {(39 + 1 + OBW + 24){1'b0}}),
+        .orig_i(ev_hp && !e_h_shadow && !e_h_colour_hit ? {add_sat(acc_q[e_h_ctx], e_hp_bg), sp_q[e_h_ctx] != {SPW{1'b0}},
+                                                           seq_q[e_h_ctx][OBW-1:0], y_q[e_h_ctx], x_q[e_h_ctx]}
+                                                        : {(39 + 1 + OBW + 24){1'b0}}));
+`endif
     // E1's pushes: the records were loaded at the end of E0 (rq_*, spq_data)
     assign rq_push  = (ev_ch && e_ch_kind == K_SHADOW && e_ch_lit) || (ev_hp && e_h_shadow && !e_sh_ends)
                       || ev_pop || ev_cam;
@@ -759,13 +788,13 @@ module csgrt_raytree #(
                 if (!e_h_shadow) begin
                     // ---- a colour ray came back
                     if (!e_h_colour_hit) begin
-                        acc_q[e_h_ctx] <= acc_hp;
-                        if (sp_q[e_h_ctx] != {SPW{1'b0}}) pop_q[e_h_ctx] <= 1'b1;
+                        acc_q[e_h_ctx] <= hpp_sum_q;
+                        if (hpp_more_q) pop_q[e_h_ctx] <= 1'b1;
                         else begin
                             busy_q[e_h_ctx] <= 1'b0;
-                            ob_valid_q[seq_q[e_h_ctx][OBW-1:0]] <= 1'b1;
-                            ob_acc_q[seq_q[e_h_ctx][OBW-1:0]]   <= acc_hp;
-                            ob_xy_q[seq_q[e_h_ctx][OBW-1:0]]    <= {y_q[e_h_ctx], x_q[e_h_ctx]};
+                            ob_valid_q[hpp_slot_q] <= 1'b1;
+                            ob_acc_q[hpp_slot_q]   <= hpp_sum_q;
+                            ob_xy_q[hpp_slot_q]    <= hpp_xy_q;
                         end
                     end else begin
                         // (the hit itself is written already: hit_write)
