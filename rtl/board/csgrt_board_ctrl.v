@@ -70,6 +70,16 @@ module csgrt_board_ctrl #(
     reg [63:0] ob_q;                     // bytes to send, the next in ob_q[7:0]
     reg [3:0]  on_q;                     // how many
     reg        start_q;
+    // The core's pixel is taken into a register of its own (pix_q) and sent
+    // from there: pix_ready is then a register, not the byte sender's
+    // count test, and the core's output handshake no longer runs on into
+    // the choice of ob_q's next value (tools/logic_depth.py: on_q -> the
+    // core's pixel handshake -> the state decode -> ob_q, 7 LUT levels).
+    // The serial line takes 30 bit times per pixel, so the clock this adds
+    // per pixel costs nothing.
+    reg        pix_full_q;               // pix_q holds a pixel not yet in ob_q
+    reg [23:0] pix_q;
+    reg        done_seen_q;              // the core's done_o pulse came (the last pixel is taken)
     assign state_o = state_q;
 
     // ------------------------------------------------------------- the core
@@ -78,7 +88,7 @@ module csgrt_board_ctrl #(
     wire [11:0] pix_x, pix_y;
     wire [23:0] pix_rgb;
     wire [63:0] stat_cycles, stat_pairs;
-    wire        pix_ready = (state_q == S_RENDER) && (on_q == 4'd0);
+    wire        pix_ready = (state_q == S_RENDER) && !pix_full_q;
 
     csgrt_top #(.BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .TREE_HEIGHT(TREE_HEIGHT), .LUT_FILE(LUT_FILE),
                 .SHADOWS(SHADOWS), .REFLECTION(REFLECTION), .REFRACTION(REFRACTION),
@@ -104,6 +114,8 @@ module csgrt_board_ctrl #(
             core_rst_nq  <= 1'b0;
             word_valid_q <= 1'b0;
             on_q         <= 4'd0;
+            pix_full_q   <= 1'b0;
+            done_seen_q  <= 1'b0;
             last_code_o  <= 4'd0;
             idle_q       <= {IW{1'b0}};
         end else begin
@@ -155,19 +167,29 @@ module csgrt_board_ctrl #(
                     on_q        <= 4'd2;
                     last_code_o <= code_q;
                     if (code_q == 4'd0) begin
-                        start_q <= 1'b1;
-                        state_q <= S_RENDER;
+                        start_q     <= 1'b1;
+                        pix_full_q  <= 1'b0;
+                        done_seen_q <= 1'b0;
+                        state_q     <= S_RENDER;
                     end else begin
                         state_q <= (code_q == 4'd15) ? S_IDLE : S_DRAIN;
                     end
                 end
-            S_RENDER:
+            S_RENDER: begin
                 if (pix_valid && pix_ready) begin
-                    ob_q <= {40'd0, pix_rgb[7:0], pix_rgb[15:8], pix_rgb[23:16]};
-                    on_q <= 4'd3;
-                end else if (done) begin
+                    pix_full_q <= 1'b1;
+                    pix_q      <= pix_rgb;
+                end
+                if (done) done_seen_q <= 1'b1;
+                if (pix_full_q && on_q == 4'd0) begin
+                    ob_q       <= {40'd0, pix_q[7:0], pix_q[15:8], pix_q[23:16]};
+                    on_q       <= 4'd3;
+                    pix_full_q <= 1'b0;
+                end else if (!pix_full_q && done_seen_q) begin
+                    // the last pixel is in ob_q (done_o pulses after it is taken)
                     state_q <= S_TRAILER;
                 end
+            end
             S_TRAILER:                           // done_o was the clock before: statistics final
                 if (on_q == 4'd0) begin
                     ob_q    <= stat_cycles;
