@@ -75,6 +75,7 @@ module csgrt_hit_prep #(
     output wire                      m_valid_o,
     input  wire                      m_ready_i,
     output wire [REC_W-1:0]          m_rec_o,
+    output wire                      m_rec_valid_o,   // m_rec_o holds the next record (often before m_valid_o)
     output wire [3*BITS-1:0]         m_p_o,
     output wire                      m_in_range_o,
     output wire [3*13-1:0]           m_bg_o,          // colour ray: rnd(w background), saturated at 4095
@@ -327,6 +328,7 @@ module csgrt_hit_prep #(
         .clk_i, .rst_ni, .valid_i(take), .ready_o(fifo_ready), .data_i(s_rec_i),
         .valid_o(rec_valid), .ready_i(m_valid_o && m_ready_i), .data_o(m_rec_o));
     assign m_valid_o = out_valid && rec_valid;   // rec_valid always holds with out_valid
+    assign m_rec_valid_o = rec_valid;
 
     wire [YW-1:0] o_y = out_w[0 +: YW];
     assign m_p_o         = o_y[XW +: 3*B];

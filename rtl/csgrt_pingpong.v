@@ -9,8 +9,10 @@
 // tree's event choice, docs/fpga.md), that net ran through the
 // consumer's priority logic into hundreds of enables. Here the two words
 // sit in two slots written alternately; ready_i only moves the read
-// pointer and the count, and data_o is the slot the read pointer names
-// (a 2:1 multiplexer after the registers, its select a register).
+// pointer and the full bits, and data_o is the slot the read pointer
+// names (a 2:1 multiplexer after the registers, its select a register).
+// valid_o and ready_o are registers of their own, so the handshake's
+// logic does not hang on the read pointer's WIDTH loads.
 //
 // Each slot loads data_i on every clock it is the write slot and empty:
 // its enable is registers only (the word is kept when valid_i and room
@@ -37,6 +39,9 @@ module csgrt_pingpong #(
     reg             full0_q, full1_q;   // slot k holds a word
     reg             wr_q, rd_q;         // the slot written next, the slot read next
     reg             ready_q;            // !(full0_q && full1_q), a register of its own
+    reg             valid_q;            // full0_q || full1_q, a register of its own: the
+                                        // consumer's handshake reads it, not rd_q's
+                                        // WIDTH-wide net
 
     wire push = valid_i && ready_q;
     wire pop  = valid_o && ready_i;
@@ -45,7 +50,7 @@ module csgrt_pingpong #(
 
     assign ready_o      = ready_q;
     assign ready_next_o = !rst_ni || !(full0_d && full1_d);   // the synchronous reset empties both
-    assign valid_o      = rd_q ? full1_q : full0_q;
+    assign valid_o      = valid_q;   // the word at rd_q is the older, or the only one
     assign data_o       = rd_q ? slot1_q : slot0_q;
 
     always @(posedge clk_i) begin
@@ -55,12 +60,14 @@ module csgrt_pingpong #(
             wr_q    <= 1'b0;
             rd_q    <= 1'b0;
             ready_q <= 1'b1;
+            valid_q <= 1'b0;
         end else begin
             full0_q <= full0_d;
             full1_q <= full1_d;
             if (push) wr_q <= !wr_q;
             if (pop)  rd_q <= !rd_q;
             ready_q <= !(full0_d && full1_d);
+            valid_q <= full0_d || full1_d;
         end
         if (!wr_q && !full0_q) slot0_q <= data_i;
         if ( wr_q && !full1_q) slot1_q <= data_i;

@@ -265,6 +265,7 @@ module csgrt_raytree #(
     // traced rays through csgrt_hit_prep
     localparam TREC_W = REC_W + 6 * B + 10 * B + MAT_W + NS + RUN_W + NS + 1 + TW + 32 + 2;
     wire               hp_valid;
+    wire               hp_rec_valid;
     wire               hp_ready;
     wire [TREC_W-1:0]  hp_rec;
     wire [3*B-1:0]     hp_p;
@@ -311,7 +312,7 @@ module csgrt_raytree #(
         .s_reflection_i (tr_mat_i[M_REFL +: 16]),
         .s_rec_i ({tr_want_refr, tr_want_refl, tr_ior_to_i, tr_ior_from_i, tr_t_i, tr_hit_i, tr_flags_after_i, tr_run_i, tr_flags_near_i, tr_mat_i,
                    tr_coef_i, tr_o_i, tr_d_i, tr_rec_i}),
-        .m_valid_o (hp_valid), .m_ready_i (hp_ready), .m_rec_o (hp_rec),
+        .m_valid_o (hp_valid), .m_ready_i (hp_ready), .m_rec_o (hp_rec), .m_rec_valid_o (hp_rec_valid),
         .m_p_o (hp_p), .m_in_range_o (hp_in_range), .m_bg_o (hp_bg), .m_w_r_o (hp_w_r), .m_w_t_o (hp_w_t),
         .m_sh_ends_o (hp_sh_ends), .m_sh_color_o (hp_sh_color), .m_sh_atten_o (hp_sh_atten),
         .m_sh_tlimit_o (hp_sh_tlimit));
@@ -691,12 +692,21 @@ module csgrt_raytree #(
     assign rq_push  = (ev_ch && e_ch_kind == K_SHADOW && e_ch_lit) || (ev_hp && e_h_shadow && !e_sh_ends)
                       || ev_pop || ev_cam;
     assign spq_push = ev_hp && !e_h_shadow && e_h_colour_hit && e_want_spawn;
-    // A colour ray's hit is written as it waits at the head of csgrt_hit_prep,
-    // whether or not E0 takes it in that clock (then again, the same values):
-    // its context has nothing else in flight and reads none of it until its
-    // children are spawned, so the write needs no event decision (these
-    // ~1,000 bits at 16 bits hung on it before).
-    wire hit_write = hp_valid && !h_shadow && h_colour_hit;
+    // A colour ray's hit is written as its record waits at the head of
+    // csgrt_hit_prep, on every clock from the record's arrival to the
+    // clock E0 takes it, whether or not it is a hit at all: its context has
+    // nothing else in flight and reads none of it until its children are
+    // spawned, and a miss has no children (the next colour ray of the
+    // context, popped or a new pixel's, writes its own hit before anything
+    // reads one). The last write, in the clock the event is taken, has the
+    // results too (hp_valid). So the write enable is two registers, the
+    // record's valid bit and its shadow bit: it waited for the event
+    // decision once (these ~1,000 bits at 16 bits hung on it), and then
+    // for the hit test on the results (h_colour_hit, behind the results'
+    // read pointer: tools/logic_depth.py's longest path, 15.19 ns). A shadow
+    // ray's record is never written: its context's hit is the one it
+    // shadows.
+    wire hit_write = hp_rec_valid && !h_shadow;
     always @(posedge clk_i)
         if (hit_write) begin
             w_q[h_ctx]     <= h_w;
