@@ -8,7 +8,7 @@
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2] [--contexts 8]
 #                  [--placer heap|static] [--heap-beta 0.9] [--place-only | --route-only] [--heatmap]
-#                  [--alt-weights] [--dry-run]
+#                  [--alt-weights] [--seed 1] [--dry-run]
 #
 # Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
 # with their input and output registers inside the block (rtl/csgrt_mul.v);
@@ -44,6 +44,9 @@
 # by unit and by band of tile rows (docs/fpga.md "Why it does not route").
 # --alt-weights (with --router router2): nextpnr's --router2-alt-weights,
 # router2's alternative cost weights.
+# --seed N: nextpnr's random seed (default 1, as every run in docs/fpga.md
+# until 2026-12-05): the same netlist placed with another seed measures
+# the spread of Fmax from one placement to another.
 # --dry-run checks the arguments, prints the core's settings as they would
 # be built (e.g. the default --max-leaves of a --tree-height) and exits
 # before any tool runs.
@@ -61,7 +64,7 @@ ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES="" ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
 EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 MAX_LIGHTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
-LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0 ALT_WEIGHTS=0 DRY_RUN=0
+LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0 ALT_WEIGHTS=0 DRY_RUN=0 SEED=1
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
@@ -90,6 +93,7 @@ while [ $# -gt 0 ]; do
         --heap-beta) HEAP_BETA=$2; shift 2 ;;     # HeAP's maximum placement density (nextpnr's default 0.9)
         --place-only) STAGE=place; shift ;;       # stop after placement, write OUT/placed.json
         --route-only) STAGE=route; SKIP_SYNTH=1; shift ;;   # route OUT/placed.json
+        --seed) SEED=$2; shift 2 ;;               # nextpnr's random seed (placements differ by it)
         --dry-run) DRY_RUN=1; shift ;;            # check the arguments, print the settings, run nothing
         *) echo "synth.sh: unknown argument $1" >&2; exit 1 ;;
     esac
@@ -109,6 +113,7 @@ if [ -z "$MAX_LEAVES" ]; then
     [ "$MAX_LEAVES" -le 64 ] || MAX_LEAVES=64
 fi
 need_number --max-leaves "$MAX_LEAVES"
+need_number --seed "$SEED"
 if [ "$MAX_LEAVES" -lt 2 ] || [ "$MAX_LEAVES" -gt $(( 1 << TREE_HEIGHT )) ]; then
     echo "synth.sh: --max-leaves $MAX_LEAVES does not fit a tree of height $TREE_HEIGHT (2 to $(( 1 << TREE_HEIGHT )) leaf slots)" >&2; exit 1
 fi
@@ -147,7 +152,7 @@ esac
 if [ "$DRY_RUN" = 1 ]; then
     echo "synth.sh: BITS=$BITS TREE_HEIGHT=$TREE_HEIGHT MAX_LEAVES=$MAX_LEAVES MAX_LIGHTS=$MAX_LIGHTS" \
          "SHADOWS=$SHADOWS REFLECTION=$REFLECTION REFRACTION=$REFRACTION SPECULAR=$SPECULAR" \
-         "NUM_UNITS=$UNITS CONTEXTS=$CONTEXTS FREQ=$FREQ ROUTER=$ROUTER STAGE=$STAGE OUT=$OUT"
+         "NUM_UNITS=$UNITS CONTEXTS=$CONTEXTS FREQ=$FREQ ROUTER=$ROUTER STAGE=$STAGE SEED=$SEED OUT=$OUT"
     exit 0
 fi
 mkdir -p "$OUT"
@@ -259,7 +264,7 @@ if [ "$HEATMAP" = 1 ]; then
 fi
 [ "$ALT_WEIGHTS" = 1 ] && PNR_OPT+=(--router2-alt-weights)
 "$NEXTPNR" --85k --package CABGA381 --speed 6 "${PNR_IN[@]}" "${PNR_OPT[@]}" \
-    --report "$OUT/nextpnr_report.json" --timing-allow-fail --seed 1 --router "$ROUTER" > "$OUT/nextpnr.log" 2>&1 &
+    --report "$OUT/nextpnr_report.json" --timing-allow-fail --seed "$SEED" --router "$ROUTER" > "$OUT/nextpnr.log" 2>&1 &
 PNR_PID=$!
 while kill -0 $PNR_PID 2>/dev/null; do
     sleep 5

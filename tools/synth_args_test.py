@@ -76,6 +76,11 @@ def test_effects_and_lights(ctx):
     check((s["SHADOWS"], s["REFLECTION"], s["REFRACTION"]) == ("1", "1", "1"), f"{s}")
 
 
+def test_seed(ctx):
+    check(settings(ctx)["SEED"] == "1", "the default seed is 1")
+    check(settings(ctx, "--seed", "7")["SEED"] == "7", "--seed 7")
+
+
 def test_refusals(ctx):
     refused(ctx, "does not fit a tree of height 5", "--tree-height", "5", "--max-leaves", "64")
     refused(ctx, "does not fit a tree of height 8", "--max-leaves", "1")
@@ -84,6 +89,7 @@ def test_refusals(ctx):
     refused(ctx, "--max-lights takes 1 to 8", "--max-lights", "9")
     refused(ctx, "--alt-weights needs --router router2", "--alt-weights")
     refused(ctx, "--heatmap needs --router router2", "--heatmap", "--router", "router1")
+    refused(ctx, "--seed must be a number", "--seed", "x")
     refused(ctx, "unknown argument", "--bogus")
 
 
@@ -91,4 +97,5 @@ if __name__ == "__main__":
     sys.exit(run_suite("SynthArgs", [("LeafStoreFollowsTheTree", test_leaf_store_follows_the_tree),
                                      ("MakefileTableAgrees", test_makefile_table_agrees),
                                      ("EffectsAndLights", test_effects_and_lights),
+                                     ("Seed", test_seed),
                                      ("Refusals", test_refusals)], __file__))
