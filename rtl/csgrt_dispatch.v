@@ -157,10 +157,11 @@ module csgrt_dispatch #(
                 // ray's origin flags from it at once, which started at the
                 // block RAM's read port (about 5 ns); the info is read a
                 // pipeline's length after it is written, so the extra clock
-                // of latency is hidden. A skid buffer (HEAD_REG 3), so that
-                // the pop, which comes with the ray's last leaf at the end
-                // of the sorter -> isect -> walker handshake, stops at its
-                // two words instead of running on into the RAM's pointers
+                // of latency is hidden. A two-word csgrt_pingpong (HEAD_REG
+                // 3), so that the pop, which comes with the ray's last leaf
+                // at the end of the sorter -> isect -> walker handshake,
+                // stops at its pointers instead of running on into the
+                // words' enables and the RAM's pointers
                 csgrt_fifo_block #(.WIDTH(INFO_W), .DEPTH(INFO_DEPTH), .HEAD_REG(3)) u_info (
                     .clk_i, .rst_ni,
                     .valid_i (accept && here[k]), .ready_o (room[k]), .data_i (info_i),

@@ -36,7 +36,8 @@
 //   HEAD_REG = 3: the head in a two-word csgrt_pingpong after the RAM's
 //     read register: every enable on the RAM's side decided by registers
 //     (the ping-pong's ready_o is one), and still a word per clock; ready_i
-//     reaches only the ping-pong's pointers, not the words' enables. Latency 3 clocks, capacity DEPTH + 3. For
+//     reaches only the ping-pong's pointers, not the words' enables.
+//     Latency 3 clocks, capacity DEPTH + 3. For
 //     consumers that take a word per clock and decide late in the clock:
 //     csgrt_dispatch's info queues, popped with a ray's last leaf at the
 //     end of the handshake chain from the event sorter through the
@@ -87,17 +88,17 @@ module csgrt_fifo_block #(
     end
 
     generate
-        if (HEAD_REG == 3) begin : g_head_skid
-            wire skid_ready;
+        if (HEAD_REG == 3) begin : g_head_pingpong
+            wire head_ready;
             wire unused_ready_next;
-            assign rd_free = !rd_valid_q || skid_ready;
+            assign rd_free = !rd_valid_q || head_ready;
             csgrt_pingpong #(.WIDTH(WIDTH)) u_head (
-                .clk_i, .rst_ni, .valid_i(rd_valid_q), .ready_o(skid_ready), .ready_next_o(unused_ready_next),
+                .clk_i, .rst_ni, .valid_i(rd_valid_q), .ready_o(head_ready), .ready_next_o(unused_ready_next),
                 .data_i(rd_data_q), .valid_o(valid_o), .ready_i(ready_i), .data_o(data_o));
             always @(posedge clk_i) begin
                 if (!rst_ni)         rd_valid_q <= 1'b0;
                 else if (load)       rd_valid_q <= 1'b1;
-                else if (skid_ready) rd_valid_q <= 1'b0;
+                else if (head_ready) rd_valid_q <= 1'b0;
             end
         end else if (HEAD_REG != 0) begin : g_head_reg
             // the head in the fabric, loaded from the read register when
