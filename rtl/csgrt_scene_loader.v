@@ -127,7 +127,8 @@ module csgrt_scene_loader #(
     // stage, the compares' carry chains led straight into the enables of
     // the wide configuration registers (the classification tree's
     // operators, thousands of flip-flops away: tools/logic_depth.py).
-    // loaded_o rises when stage 1 has written the last word.
+    // Stage 2 (below) writes the camera and the lights; loaded_o rises
+    // when stage 2 has passed the last word.
     wire in_camera0    = idx_q >= off_camera_q    && idx_q < off_lights_q;
     wire in_lights0    = idx_q >= off_lights_q    && idx_q < off_materials_q;
     wire in_materials0 = idx_q >= off_materials_q && idx_q < off_leaves_q;
@@ -150,6 +151,19 @@ module csgrt_scene_loader #(
     // registers are.
     reg  [3:0]             s1_err_q;
     reg                    s1_bad_height_q;
+    // Stage 2 writes the camera and the lights, from enables decoded in
+    // stage 1 (one register per word position). Decoded and written in
+    // stage 1, the light item's 32-bit compare (it_now < MAX_LIGHTS, a carry
+    // chain behind section_start_q's mux) led into the enables of the light
+    // registers, whose loads sit in the shading across the die: the routed
+    // f8d2add build's critical path (docs/fpga.md). loaded_o rises in
+    // stage 2 too, with the last word's stage-2 clock, so everything is
+    // written when it rises whatever the sections' order.
+    localparam CAM_WORDS = 24;
+    reg  [31:0]                 s2_w_q;
+    reg                         s2_last_q;
+    reg  [CAM_WORDS-1:0]        s2_cam_we_q;                  // camera word k
+    reg  [MAX_LIGHTS*LIGHT_WORDS-1:0] s2_light_we_q;          // light j, field f at j*LIGHT_WORDS + f
     wire [31:0] cam_r = s1_cam_r_q;
     wire [3:0] section_size = in_lights_q ? LIGHT_WORDS[3:0] : in_materials_q ? MATERIAL_WORDS[3:0] : LEAF_WORDS[3:0];
     wire [31:0] w = s1_w_q;   // stage 1's word
@@ -172,6 +186,9 @@ module csgrt_scene_loader #(
             idx_q        <= 32'd0;
             done0_q      <= 1'b0;
             s1_valid_q   <= 1'b0;
+            s2_last_q    <= 1'b0;
+            s2_cam_we_q  <= {CAM_WORDS{1'b0}};
+            s2_light_we_q <= {(MAX_LIGHTS*LIGHT_WORDS){1'b0}};
             loaded_o     <= 1'b0;
             error_o      <= 4'd0;
             slot_used_o  <= {SLOTS{1'b0}};
@@ -186,6 +203,9 @@ module csgrt_scene_loader #(
             field_q      <= 4'd0;
         end else begin
             s1_valid_q <= 1'b0;
+            s2_last_q     <= s1_valid_q && s1_last_q;
+            s2_cam_we_q   <= {CAM_WORDS{1'b0}};
+            s2_light_we_q <= {(MAX_LIGHTS*LIGHT_WORDS){1'b0}};
             if (word_valid_i && !done0_q) begin
                 // ---- stage 0: the index, the header, where the word belongs
                 idx_q <= idx_q + 32'd1;
@@ -238,21 +258,12 @@ module csgrt_scene_loader #(
 
             if (s1_valid_q) begin
                 // ---- stage 1: the sections' writes
-                if (s1_last_q) loaded_o <= 1'b1;
                 if (s1_err_q != 4'd0) error_o <= s1_err_q;   // a header word's check
 
-                // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3)
-                if (in_camera_q) begin
-                    for (j = 0; j < 3; j = j + 1)
-                        if (cam_r == j) cam_origin_o[j*BITS +: BITS] <= w[BITS-1:0];
-                    for (j = 0; j < 6; j = j + 1) begin
-                        if (cam_r == 3 + j)  cam_base_o[j*32 +: 32] <= w;
-                        if (cam_r == 9 + j)  cam_dx_o[j*32 +: 32] <= w;
-                        if (cam_r == 15 + j) cam_dy_o[j*32 +: 32] <= w;
-                    end
-                    for (j = 0; j < 3; j = j + 1)
-                        if (cam_r == 21 + j) background_o[j*16 +: 16] <= w[15:0];
-                end
+                // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3): stage 2's enables
+                if (in_camera_q)
+                    for (j = 0; j < CAM_WORDS; j = j + 1)
+                        if (cam_r == j) s2_cam_we_q[j] <= 1'b1;
 
                 // ---- lights, materials, leaves: item / field counters
                 if (in_lights_q || in_materials_q || in_leaves_q) begin
@@ -263,16 +274,13 @@ module csgrt_scene_loader #(
                         field_q <= field_q + 4'd1;
                     end
                 end
-                // f_now < LIGHT_WORDS = 7 here: the field counter wraps at the section size
-                if (in_lights_q && it_now < MAX_LIGHTS) begin
-                    for (j = 0; j < MAX_LIGHTS; j = j + 1) begin
-                        for (f = 0; f < 3; f = f + 1)
-                            if (it_now == j && f32 == f) light_pos_o[(j*3 + f) * BITS +: BITS] <= w[BITS-1:0];
-                        for (f = 3; f < 6; f = f + 1)
-                            if (it_now == j && f32 == f) light_col_o[(j*3 + f - 3) * 16 +: 16] <= w[15:0];
-                        if (it_now == j && f32 == 6) light_shadowless_o[j] <= w[0];
-                    end
-                end
+                // lights: stage 2's enables (f_now < LIGHT_WORDS = 7 here: the
+                // field counter wraps at the section size; an item at or past
+                // MAX_LIGHTS matches no j and is not written)
+                if (in_lights_q)
+                    for (j = 0; j < MAX_LIGHTS; j = j + 1)
+                        for (f = 0; f < LIGHT_WORDS; f = f + 1)
+                            if (it_now == j && f32 == f) s2_light_we_q[j*LIGHT_WORDS + f] <= 1'b1;
                 if (in_materials_q) begin
                     // words: r g b filter ambient diffuse phong reflection ior phong_size
                     case (f_now)
@@ -321,6 +329,26 @@ module csgrt_scene_loader #(
                             end
                     end
                 end
+            end
+
+            // ---- stage 2: camera and lights, and loaded_o
+            s2_w_q <= w;
+            if (s2_last_q) loaded_o <= 1'b1;
+            for (j = 0; j < 3; j = j + 1) begin
+                if (s2_cam_we_q[j])      cam_origin_o[j*BITS +: BITS] <= s2_w_q[BITS-1:0];
+                if (s2_cam_we_q[21 + j]) background_o[j*16 +: 16]     <= s2_w_q[15:0];
+            end
+            for (j = 0; j < 6; j = j + 1) begin
+                if (s2_cam_we_q[3 + j])  cam_base_o[j*32 +: 32] <= s2_w_q;
+                if (s2_cam_we_q[9 + j])  cam_dx_o[j*32 +: 32]   <= s2_w_q;
+                if (s2_cam_we_q[15 + j]) cam_dy_o[j*32 +: 32]   <= s2_w_q;
+            end
+            for (j = 0; j < MAX_LIGHTS; j = j + 1) begin
+                for (f = 0; f < 3; f = f + 1)
+                    if (s2_light_we_q[j*LIGHT_WORDS + f]) light_pos_o[(j*3 + f) * BITS +: BITS] <= s2_w_q[BITS-1:0];
+                for (f = 3; f < 6; f = f + 1)
+                    if (s2_light_we_q[j*LIGHT_WORDS + f]) light_col_o[(j*3 + f - 3) * 16 +: 16] <= s2_w_q[15:0];
+                if (s2_light_we_q[j*LIGHT_WORDS + 6]) light_shadowless_o[j] <= s2_w_q[0];
             end
         end
     end

@@ -114,7 +114,9 @@ class TopSim {
             do tick(); while (!top_->load_ready_o);
         }
         top_->load_valid_i = 0;
-        tick();
+        // the loader's pipeline (three stages) finishes the last word a few
+        // clocks after taking it
+        for (int i = 0; i < 8 && !top_->loaded_o; ++i) tick();
         if (!top_->loaded_o) return 15;
         return top_->load_error_o;
     }
