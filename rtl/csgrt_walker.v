@@ -357,11 +357,19 @@ module csgrt_walker #(
             if (issue && probe) pr_q <= 1'b1;
             if (issue && !probe) begin
                 pr_q <= 1'b0;
-                if (ev_valid_i) begin
-                    gv_q <= 1'b1;
-                    if (!later) gfl_q <= fl_cur;
-                end
+                if (ev_valid_i) gv_q <= 1'b1;
             end
+            // gfl_q follows the bank on every clock whose head is not a
+            // later member of a tie group, so it holds the flags from the
+            // clock the group's first member issues until the group ends.
+            // (Loaded only at that issue, its enable ran from the sorter's
+            // head through the probe and issue decisions: tools/
+            // logic_depth.py's longest path.) The clocks between have no
+            // other load: within a ray the sorter's head stays valid until
+            // its last event, and a ray's first issue has gv_q clear. A
+            // simulation check compares it at every probe with a copy
+            // loaded only at the first member's issue.
+            if (!later) gfl_q <= fl_cur;
             // The crossing leaves the flag at the event's side whether it
             // toggles it (the flag was !entering) or is skipped as invalid
             // (it was entering already), so the bank is written with
@@ -402,6 +410,16 @@ module csgrt_walker #(
             if (fin_hit) done_q[t_seq] <= 1'b1;
         end
     end
+
+`ifndef SYNTHESIS
+    // gfl_q as it was: loaded at the issue of a tie group's first member only
+    reg [NS-1:0] gfl_ref_q;
+    always @(posedge clk_i)
+        if (ce && issue && !probe && ev_valid_i && !later) gfl_ref_q <= fl_cur;
+    csgrt_check_same #(.WIDTH(NS), .WHAT("gfl_q (the flags before a tie group) at a probe")) u_check_gfl (
+        .clk_i, .rst_ni, .copy_i(issue && probe ? gfl_q : {NS{1'b0}}),
+        .orig_i(issue && probe ? gfl_ref_q : {NS{1'b0}}));
+`endif
 
     // ---- output ----------------------------------------------------------------
     wire [PAYLOAD_WIDTH-1:0] t_pl = t_seq ? pl1_q : pl0_q;
