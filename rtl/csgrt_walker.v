@@ -537,8 +537,20 @@ module csgrt_walker #(
             // whole, by flags_near)
             reg  [RW-1:0] grun_q;
             assign tag_in = {later ? grun_q : run_now, tag_base};
+            // loaded on every clock whose head is not a later member of a
+            // group, as gfl_q is (above), so its enable is no longer behind
+            // the probe and issue decisions; a simulation check compares it
+            // at every later member's issue with a copy loaded as before
             always @(posedge clk_i)
-                if (ce && issue && !probe && !later) grun_q <= run_now;
+                if (ce && !later) grun_q <= run_now;
+`ifndef SYNTHESIS
+            reg  [RW-1:0] grun_ref_q;
+            always @(posedge clk_i)
+                if (ce && issue && !probe && !later) grun_ref_q <= run_now;
+            csgrt_check_same #(.WIDTH(RW), .WHAT("grun_q (the run before a tie group) at a later member")) u_check_grun (
+                .clk_i, .rst_ni, .copy_i(issue && later ? grun_q : {RW{1'b0}}),
+                .orig_i(issue && later ? grun_ref_q : {RW{1'b0}}));
+`endif
             wire [NS-1:0] slot_bit = {{(NS-1){1'b0}}, 1'b1} << t_slot;
             wire [NS-1:0] fa_hit   = flags_before ^ slot_bit;   // after the hit's own crossing
             always @(posedge clk_i) begin
