@@ -8,7 +8,8 @@
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2] [--contexts 8]
 #                  [--placer heap|static] [--heap-beta 0.9] [--place-only | --route-only] [--heatmap]
-#                  [--alt-weights] [--seed 1] [--dry-run]
+#                  [--alt-weights] [--seed 1] [--timing-weight 10] [--crit-exp 2] [--tmg-ripup]
+#                  [--dry-run]
 #
 # Multipliers: csgrt_mul is built with CSGRT_ECP5_DSP, as MULT18X18D tiles
 # with their input and output registers inside the block (rtl/csgrt_mul.v);
@@ -47,6 +48,12 @@
 # --seed N: nextpnr's random seed (default 1, as every run in docs/fpga.md
 # until 2026-12-05): the same netlist placed with another seed measures
 # the spread of Fmax from one placement to another.
+# --timing-weight N, --crit-exp N: HeAP's timing weight and criticality
+# exponent (nextpnr's --placer-heap-timingweight, default 10, and
+# --placer-heap-critexp, default 2): how hard the placer pulls the cells of
+# the slowest paths together, and how sharply it favours the slowest over
+# the rest. --tmg-ripup: the router rips up and reroutes for timing too
+# (nextpnr's experimental --tmg-ripup).
 # --dry-run checks the arguments, prints the core's settings as they would
 # be built (e.g. the default --max-leaves of a --tree-height) and exits
 # before any tool runs.
@@ -65,6 +72,7 @@ ROOT=$PWD
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES="" ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
 EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 MAX_LIGHTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
 LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0 ALT_WEIGHTS=0 DRY_RUN=0 SEED=1
+TIMING_WEIGHT="" CRIT_EXP="" TMG_RIPUP=0
 while [ $# -gt 0 ]; do
     case "$1" in
         --bits) BITS=$2; shift 2 ;;
@@ -94,6 +102,9 @@ while [ $# -gt 0 ]; do
         --place-only) STAGE=place; shift ;;       # stop after placement, write OUT/placed.json
         --route-only) STAGE=route; SKIP_SYNTH=1; shift ;;   # route OUT/placed.json
         --seed) SEED=$2; shift 2 ;;               # nextpnr's random seed (placements differ by it)
+        --timing-weight) TIMING_WEIGHT=$2; shift 2 ;;   # HeAP's timing weight (nextpnr's default 10)
+        --crit-exp) CRIT_EXP=$2; shift 2 ;;       # HeAP's criticality exponent (nextpnr's default 2)
+        --tmg-ripup) TMG_RIPUP=1; shift ;;        # the router's timing-driven rip-up
         --dry-run) DRY_RUN=1; shift ;;            # check the arguments, print the settings, run nothing
         *) echo "synth.sh: unknown argument $1" >&2; exit 1 ;;
     esac
@@ -114,6 +125,8 @@ if [ -z "$MAX_LEAVES" ]; then
 fi
 need_number --max-leaves "$MAX_LEAVES"
 need_number --seed "$SEED"
+[ -z "$TIMING_WEIGHT" ] || need_number --timing-weight "$TIMING_WEIGHT"
+[ -z "$CRIT_EXP" ] || need_number --crit-exp "$CRIT_EXP"
 if [ "$MAX_LEAVES" -lt 2 ] || [ "$MAX_LEAVES" -gt $(( 1 << TREE_HEIGHT )) ]; then
     echo "synth.sh: --max-leaves $MAX_LEAVES does not fit a tree of height $TREE_HEIGHT (2 to $(( 1 << TREE_HEIGHT )) leaf slots)" >&2; exit 1
 fi
@@ -152,7 +165,8 @@ esac
 if [ "$DRY_RUN" = 1 ]; then
     echo "synth.sh: BITS=$BITS TREE_HEIGHT=$TREE_HEIGHT MAX_LEAVES=$MAX_LEAVES MAX_LIGHTS=$MAX_LIGHTS" \
          "SHADOWS=$SHADOWS REFLECTION=$REFLECTION REFRACTION=$REFRACTION SPECULAR=$SPECULAR" \
-         "NUM_UNITS=$UNITS CONTEXTS=$CONTEXTS FREQ=$FREQ ROUTER=$ROUTER STAGE=$STAGE SEED=$SEED OUT=$OUT"
+         "NUM_UNITS=$UNITS CONTEXTS=$CONTEXTS FREQ=$FREQ ROUTER=$ROUTER STAGE=$STAGE SEED=$SEED" \
+         "TIMING_WEIGHT=${TIMING_WEIGHT:-default} CRIT_EXP=${CRIT_EXP:-default} TMG_RIPUP=$TMG_RIPUP OUT=$OUT"
     exit 0
 fi
 mkdir -p "$OUT"
@@ -258,6 +272,9 @@ PY
 esac
 PNR_OPT=(--placer "$PLACER")
 [ -n "$HEAP_BETA" ] && PNR_OPT+=(--placer-heap-beta "$HEAP_BETA")
+[ -n "$TIMING_WEIGHT" ] && PNR_OPT+=(--placer-heap-timingweight "$TIMING_WEIGHT")
+[ -n "$CRIT_EXP" ] && PNR_OPT+=(--placer-heap-critexp "$CRIT_EXP")
+[ "$TMG_RIPUP" = 1 ] && PNR_OPT+=(--tmg-ripup)
 if [ "$HEATMAP" = 1 ]; then
     mkdir -p "$OUT/heat"
     PNR_OPT+=(--router2-heatmap "$OUT/heat/h")   # per iteration: tools/congestion.py $OUT/heat/h

@@ -81,6 +81,13 @@ def test_seed(ctx):
     check(settings(ctx, "--seed", "7")["SEED"] == "7", "--seed 7")
 
 
+def test_placer_timing(ctx):
+    s = settings(ctx)
+    check((s["TIMING_WEIGHT"], s["CRIT_EXP"], s["TMG_RIPUP"]) == ("default", "default", "0"), f"{s}")
+    s = settings(ctx, "--timing-weight", "30", "--crit-exp", "4", "--tmg-ripup")
+    check((s["TIMING_WEIGHT"], s["CRIT_EXP"], s["TMG_RIPUP"]) == ("30", "4", "1"), f"{s}")
+
+
 def test_refusals(ctx):
     refused(ctx, "does not fit a tree of height 5", "--tree-height", "5", "--max-leaves", "64")
     refused(ctx, "does not fit a tree of height 8", "--max-leaves", "1")
@@ -90,6 +97,8 @@ def test_refusals(ctx):
     refused(ctx, "--alt-weights needs --router router2", "--alt-weights")
     refused(ctx, "--heatmap needs --router router2", "--heatmap", "--router", "router1")
     refused(ctx, "--seed must be a number", "--seed", "x")
+    refused(ctx, "--timing-weight must be a number", "--timing-weight", "high")
+    refused(ctx, "--crit-exp must be a number", "--crit-exp", "-1")
     refused(ctx, "unknown argument", "--bogus")
 
 
@@ -98,4 +107,5 @@ if __name__ == "__main__":
                                      ("MakefileTableAgrees", test_makefile_table_agrees),
                                      ("EffectsAndLights", test_effects_and_lights),
                                      ("Seed", test_seed),
+                                     ("PlacerTiming", test_placer_timing),
                                      ("Refusals", test_refusals)], __file__))
