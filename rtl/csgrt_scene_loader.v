@@ -151,12 +151,17 @@ module csgrt_scene_loader #(
     // registers are.
     reg  [3:0]             s1_err_q;
     reg                    s1_bad_height_q;
-    // Stage 2 writes the camera and the lights, from enables decoded in
-    // stage 1 (one register per word position). Decoded and written in
-    // stage 1, the light item's 32-bit compare (it_now < MAX_LIGHTS, a carry
-    // chain behind section_start_q's mux) led into the enables of the light
-    // registers, whose loads sit in the shading across the die: the routed
-    // f8d2add build's critical path (docs/fpga.md). loaded_o rises in
+    // Stage 2 writes the camera, the lights, the materials and the leaves,
+    // from enables (and for the memories an address) decoded in stage 1:
+    // one register per word position. Decoded and written in stage 1, an
+    // item's 32-bit compare (it_now < MAX_LIGHTS, MAX_MATERIALS or
+    // MAX_LEAVES: a carry chain behind section_start_q's mux) led into the
+    // write enables across the die: the light registers' was the routed
+    // f8d2add build's critical path, the leaf materials' that of 2a28a4c
+    // (docs/fpga.md). A material's or leaf's record is written from
+    // mat_acc_q or coef_acc_q a clock after its last word: in that clock
+    // stage 1 writes only the first field of the next one, which the
+    // record does not read back until the clock after. loaded_o rises in
     // stage 2 too, with the last word's stage-2 clock, so everything is
     // written when it rises whatever the sections' order.
     localparam CAM_WORDS = 24;
@@ -164,6 +169,10 @@ module csgrt_scene_loader #(
     reg                         s2_last_q;
     reg  [CAM_WORDS-1:0]        s2_cam_we_q;                  // camera word k
     reg  [MAX_LIGHTS*LIGHT_WORDS-1:0] s2_light_we_q;          // light j, field f at j*LIGHT_WORDS + f
+    reg                         s2_mat_we_q;                  // a material's last word: its record
+    reg  [7:0]                  s2_mat_addr_q;                // its entry (material index: item + 1)
+    reg                         s2_leaf_we_q;                 // a leaf's last word: its coefficients and material
+    reg  [LEAF_BITS-1:0]        s2_leaf_addr_q;
     wire [31:0] cam_r = s1_cam_r_q;
     wire [3:0] section_size = in_lights_q ? LIGHT_WORDS[3:0] : in_materials_q ? MATERIAL_WORDS[3:0] : LEAF_WORDS[3:0];
     wire [31:0] w = s1_w_q;   // stage 1's word
@@ -189,6 +198,8 @@ module csgrt_scene_loader #(
             s2_last_q    <= 1'b0;
             s2_cam_we_q  <= {CAM_WORDS{1'b0}};
             s2_light_we_q <= {(MAX_LIGHTS*LIGHT_WORDS){1'b0}};
+            s2_mat_we_q  <= 1'b0;
+            s2_leaf_we_q <= 1'b0;
             loaded_o     <= 1'b0;
             error_o      <= 4'd0;
             slot_used_o  <= {SLOTS{1'b0}};
@@ -206,6 +217,8 @@ module csgrt_scene_loader #(
             s2_last_q     <= s1_valid_q && s1_last_q;
             s2_cam_we_q   <= {CAM_WORDS{1'b0}};
             s2_light_we_q <= {(MAX_LIGHTS*LIGHT_WORDS){1'b0}};
+            s2_mat_we_q   <= 1'b0;
+            s2_leaf_we_q  <= 1'b0;
             if (word_valid_i && !done0_q) begin
                 // ---- stage 0: the index, the header, where the word belongs
                 idx_q <= idx_q + 32'd1;
@@ -293,12 +306,9 @@ module csgrt_scene_loader #(
                         4'd7: mat_acc_q[96 +: 16] <= w[15:0];
                         4'd3: mat_acc_q[112 +: 16] <= w[15:0];   // filter
                         4'd8: mat_acc_q[128 +: 16] <= w[15:0];   // ior
-                        4'd9: if (it_now < MAX_MATERIALS) begin
-                                  mat_mem[it_now[7:0] + 8'd1] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], w[9:0],
-                                                                  mat_acc_q[111:0]};
-                                  ior_mem[it_now[7:0] + 8'd1] <= mat_acc_q[128 +: 16];
-                                  mat_want_mem[it_now[7:0] + 8'd1] <= {mat_acc_clear, mat_acc_reflects};
-                                  mat_clear_o[it_now[7:0] + 8'd1] <= mat_acc_clear;
+                        4'd9: begin   // the record: stage 2
+                                  s2_mat_we_q   <= it_now < MAX_MATERIALS;
+                                  s2_mat_addr_q <= it_now[7:0] + 8'd1;
                               end
                         default: ;
                     endcase
@@ -307,9 +317,9 @@ module csgrt_scene_loader #(
                     if (f_now < 10) begin
                         for (f = 0; f < 10; f = f + 1)
                             if (f32 == f) coef_acc_q[f * BITS +: BITS] <= w[BITS-1:0];
-                    end else if (it_now < MAX_LEAVES) begin
-                        leaf_coef_mem[it_now[LEAF_BITS-1:0]] <= coef_acc_q;
-                        leaf_mat_q[it_now[LEAF_BITS-1:0]]    <= w[7:0];
+                    end else begin   // the leaf: stage 2
+                        s2_leaf_we_q   <= it_now < MAX_LEAVES;
+                        s2_leaf_addr_q <= it_now[LEAF_BITS-1:0];
                     end
                 end
 
@@ -331,9 +341,20 @@ module csgrt_scene_loader #(
                 end
             end
 
-            // ---- stage 2: camera and lights, and loaded_o
+            // ---- stage 2: camera, lights, materials, leaves, and loaded_o
             s2_w_q <= w;
             if (s2_last_q) loaded_o <= 1'b1;
+            if (s2_mat_we_q) begin
+                // words: r g b filter ambient diffuse phong reflection ior phong_size
+                mat_mem[s2_mat_addr_q] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], s2_w_q[9:0], mat_acc_q[111:0]};
+                ior_mem[s2_mat_addr_q] <= mat_acc_q[128 +: 16];
+                mat_want_mem[s2_mat_addr_q] <= {mat_acc_clear, mat_acc_reflects};
+                mat_clear_o[s2_mat_addr_q]  <= mat_acc_clear;
+            end
+            if (s2_leaf_we_q) begin
+                leaf_coef_mem[s2_leaf_addr_q] <= coef_acc_q;
+                leaf_mat_q[s2_leaf_addr_q]    <= s2_w_q[7:0];
+            end
             for (j = 0; j < 3; j = j + 1) begin
                 if (s2_cam_we_q[j])      cam_origin_o[j*BITS +: BITS] <= s2_w_q[BITS-1:0];
                 if (s2_cam_we_q[21 + j]) background_o[j*16 +: 16]     <= s2_w_q[15:0];
