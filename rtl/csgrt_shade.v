@@ -75,8 +75,8 @@
 // multiplier reads it for a whole beat); latency 322 clocks (BITS any,
 // one light, no back-pressure). A stage then has a whole beat for its
 // logic, which nextpnr times as one clock: the longer add stages (A3, A11,
-// B9, B13, C4) are split by a register in mid-beat (csgrt_beat_cut), with
-// the same results and latency.
+// B9, B13, C4) and B1's light choice are split by a register in mid-beat
+// (csgrt_beat_cut), with the same results and latency.
 // Handshake: valid/ready on both sides; s_ready_o is skid A's registered
 // ready, never combinational from m_ready_i. Config (lights, background) is
 // read when a pixel's items are issued (the light positions through a
@@ -297,7 +297,7 @@ module csgrt_shade #(
             wire [GSW-1:0] sp_d = {{3{p0[GPW-1]}}, p0} + {{3{p1[GPW-1]}}, p1} + {{3{p2[GPW-1]}}, p2};
             wire [GSW-1:0] sp;
             csgrt_beat_cut #(.WIDTH(GSW), .II(II)) u_cut (
-                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_a), .d_i(sp_d), .q_o(sp));
+                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_a), .live_i(1'b1), .d_i(sp_d), .q_o(sp));
             wire [GSW-1:0] s = sp + {{(GSW-KSW-12){kp[KSW-1]}}, kp, 12'd0}
                              + {{(GSW-15){1'b0}}, 1'b1, 14'd0};
             wire unused_s = ^{s[14:0], s[GSW-1:15+GW]};
@@ -348,7 +348,7 @@ module csgrt_shade #(
                          + {{2{nds[3*NDPW-1]}}, nds[2*NDPW +: NDPW]};
     wire [NDSW-1:0] nd;   // the dot product, after a beat cut
     csgrt_beat_cut #(.WIDTH(NDSW), .II(II)) u_cut_a11 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_a), .d_i(nd_d), .q_o(nd));
+        .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_a), .live_i(1'b1), .d_i(nd_d), .q_o(nd));
     // exact sign of the full dot product: flip when n.ds > 0
     wire            flip = !nd[NDSW-1] && (nd != {NDSW{1'b0}});
     // ds . n after the flip, rounded: flip ? -nd + h : nd + h with -nd =
@@ -462,7 +462,12 @@ module csgrt_shade #(
     // position is registered (lpa_q, one clock behind light_pos_i), and the
     // item's light is chosen from those registers by a mux over the constant
     // positions k (no index arithmetic), so B1 is k_q -> mux -> subtract.
-    // The light colour likewise (from light_color_i directly).
+    // The light colour likewise (from light_color_i directly). The chosen
+    // position goes through a beat cut before the subtract: k_q moves only
+    // at an advance and lpa_q is static, so the choice is steady for the
+    // beat (k_q's net, the mux and the subtract's carry chain were the
+    // routed 45509c3 build's critical path). The skid's sq_ps is not: a
+    // pixel can arrive in mid-beat, so the subtract stays behind the cut.
     wire [3*GW-1:0]  lv_d;
     reg  [MAX_LIGHTS*3*PSW-1:0] lpa_q;   // light k, axis i at (3k+i)*PSW, PF frac
     generate
@@ -485,12 +490,15 @@ module csgrt_shade #(
                 lcol_sel = light_color_i[kl*48 +: 48];
             end
     end
+    wire [3*PSW-1:0] lpa_cut;
+    csgrt_beat_cut #(.WIDTH(3*PSW), .II(II)) u_cut_b1 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .live_i(ska_valid), .d_i(lpa_sel), .q_o(lpa_cut));
     wire [3*16-1:0]  lcol_d = (EXT_LIGHT != 0) ? lc_color_i : lcol_sel;
     assign lc_tag_o = sq_pix[11:0];
     assign lc_k_o   = {{($clog2(MAX_LIGHTS+1)-KW_L){1'b0}}, k_q};
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_b1
-            assign lv_d[i*GW +: GW] = lpa_sel[i*PSW +: PSW] - sq_ps[i*PSW +: PSW];
+            assign lv_d[i*GW +: GW] = lpa_cut[i*PSW +: PSW] - sq_ps[i*PSW +: PSW];
         end
     endgenerate
     // item flags: {use, last, first}
@@ -560,7 +568,7 @@ module csgrt_shade #(
     wire [NLSW-1:0] ndl_c;
     wire [RLSW-1:0] cr_c;
     csgrt_beat_cut #(.WIDTH(NLSW + RLSW), .II(II)) u_cut_b9 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .d_i({cr_p, ndl_p}), .q_o({cr_c, ndl_c}));
+        .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .live_i(1'b1), .d_i({cr_p, ndl_p}), .q_o({cr_c, ndl_c}));
     wire [NLSW-1:0] ndl_s = ndl_c + {{(NLSW-15){1'b0}}, 1'b1, 14'd0};
     wire [RLSW-1:0] cr_s  = cr_c + {{(RLSW-15){1'b0}}, 1'b1, 14'd0};
     wire [NLSW-16:0] ndl_full = ndl_s[NLSW-1:15];
@@ -735,7 +743,7 @@ module csgrt_shade #(
             wire [DAW-1:0] dt;
             wire [SAW-1:0] st;
             csgrt_beat_cut #(.WIDTH(DAW + SAW), .II(II)) u_cut (
-                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .d_i({st_d, dt_d}), .q_o({st, dt}));
+                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .live_i(1'b1), .d_i({st_d, dt_d}), .q_o({st, dt}));
             assign dsum[i*DAW +: DAW] = (b12_first ? {DAW{1'b0}} : dacc_q[i*DAW +: DAW]) + dt;
             // without the specular unit the sum is constant 0 (no register left)
             assign ssum[i*SAW +: SAW] = (SPECULAR == 0) ? {SAW{1'b0}}
@@ -822,7 +830,7 @@ module csgrt_shade #(
             // the rounded product, after a beat cut: the sum and clamp after it
             wire [CPW-13:0] prc;
             csgrt_beat_cut #(.WIDTH(CPW - 12), .II(II)) u_cut (
-                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .d_i(pr[CPW-1:12]), .q_o(prc));
+                .clk_i(clk_i), .rst_ni(rst_ni), .adv_i(adv_b), .live_i(1'b1), .d_i(pr[CPW-1:12]), .q_o(prc));
             wire [CLW-1:0] col_hit = {{(CLW-(CPW-12)){prc[CPW-13]}}, prc}
                                    + {{(CLW-SAW){1'b0}}, c3_spec[i*SAW +: SAW]};
             assign col_lin[i*CLW +: CLW] = col_hit;
