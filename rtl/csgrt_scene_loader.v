@@ -120,15 +120,16 @@ module csgrt_scene_loader #(
     wire                  mat_acc_clear    = mat_acc_q[112 +: 16] != 16'd0;
     wire                  mat_acc_reflects = mat_acc_q[96 +: 16] != 16'd0;
 
-    // Two stages. Stage 0 takes the arriving word: it parses the header
+    // Three stages. Stage 0 takes the arriving word: it parses the header
     // and works out where the word belongs from its index (32-bit compares
     // and differences with the section offsets: carry chains). Stage 1,
-    // a clock later, writes it from those registered answers. In one
-    // stage, the compares' carry chains led straight into the enables of
-    // the wide configuration registers (the classification tree's
-    // operators, thousands of flip-flops away: tools/logic_depth.py).
-    // Stage 2 (below) writes the camera and the lights; loaded_o rises
-    // when stage 2 has passed the last word.
+    // a clock later, writes it from those registered answers, or, for the
+    // camera, lights, materials and leaves, decodes where stage 2 writes
+    // it (below). In one stage, the compares' carry chains led straight
+    // into the enables of the wide configuration registers (the
+    // classification tree's operators, thousands of flip-flops away:
+    // tools/logic_depth.py). loaded_o rises when stage 2 has passed the
+    // last word.
     wire in_camera0    = idx_q >= off_camera_q    && idx_q < off_lights_q;
     wire in_lights0    = idx_q >= off_lights_q    && idx_q < off_materials_q;
     wire in_materials0 = idx_q >= off_materials_q && idx_q < off_leaves_q;
@@ -191,15 +192,16 @@ module csgrt_scene_loader #(
     integer k, j, f;
 
     always @(posedge clk_i) begin
+        // stage 2's enables last a clock (stage 1 sets them), reset or not
+        s2_cam_we_q   <= {CAM_WORDS{1'b0}};
+        s2_light_we_q <= {(MAX_LIGHTS*LIGHT_WORDS){1'b0}};
+        s2_mat_we_q   <= 1'b0;
+        s2_leaf_we_q  <= 1'b0;
         if (!rst_ni) begin
             idx_q        <= 32'd0;
             done0_q      <= 1'b0;
             s1_valid_q   <= 1'b0;
             s2_last_q    <= 1'b0;
-            s2_cam_we_q  <= {CAM_WORDS{1'b0}};
-            s2_light_we_q <= {(MAX_LIGHTS*LIGHT_WORDS){1'b0}};
-            s2_mat_we_q  <= 1'b0;
-            s2_leaf_we_q <= 1'b0;
             loaded_o     <= 1'b0;
             error_o      <= 4'd0;
             slot_used_o  <= {SLOTS{1'b0}};
@@ -214,11 +216,7 @@ module csgrt_scene_loader #(
             field_q      <= 4'd0;
         end else begin
             s1_valid_q <= 1'b0;
-            s2_last_q     <= s1_valid_q && s1_last_q;
-            s2_cam_we_q   <= {CAM_WORDS{1'b0}};
-            s2_light_we_q <= {(MAX_LIGHTS*LIGHT_WORDS){1'b0}};
-            s2_mat_we_q   <= 1'b0;
-            s2_leaf_we_q  <= 1'b0;
+            s2_last_q  <= s1_valid_q && s1_last_q;
             if (word_valid_i && !done0_q) begin
                 // ---- stage 0: the index, the header, where the word belongs
                 idx_q <= idx_q + 32'd1;
@@ -345,7 +343,7 @@ module csgrt_scene_loader #(
             s2_w_q <= w;
             if (s2_last_q) loaded_o <= 1'b1;
             if (s2_mat_we_q) begin
-                // words: r g b filter ambient diffuse phong reflection ior phong_size
+                // the record (its layout: mat_o, above); phong_size is this last word
                 mat_mem[s2_mat_addr_q] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], s2_w_q[9:0], mat_acc_q[111:0]};
                 ior_mem[s2_mat_addr_q] <= mat_acc_q[128 +: 16];
                 mat_want_mem[s2_mat_addr_q] <= {mat_acc_clear, mat_acc_reflects};
