@@ -727,8 +727,22 @@ module csgrt_raytree #(
     // the spawn request of a colour hit, loaded at the end of E0 (pushed in E1)
     always @(posedge clk_i)
         spq_data <= {h_ior_to, h_ior_from, want_refr, h_ctx, want_refl, light_mask, h_coef, h_t, h_d, h_o};
+    // The events' state updates, in two blocks. The control state (which
+    // contexts are busy, spawning, waiting to be shaded or popped, which
+    // output slots are full, the valid bits of the pop and shading stages)
+    // is reset. The context data (accumulators, stack pointers, pending
+    // shadow counts, light colours, pixels, output buffer entries, the
+    // stack write and the two staged context numbers) is not: every entry
+    // is written before it is read (a new pixel writes its accumulator and
+    // stack pointer, a colour hit its pending count, each of its lights'
+    // shadow rays its light colour before the context is shaded, a retired
+    // pixel its output entry before the slot is marked full). With these
+    // writes in the reset's else branch, the core's reset (fan-out ~200)
+    // ran into all their write enables: the routed critical path of
+    // 163537d (80.62 MHz, 10.70 of 12.40 ns routing). The events' registers
+    // (ev_*) are reset, so no event writes during a reset but in its first
+    // clock, and what that writes is overwritten before it is read.
     always @(posedge clk_i) begin
-        stw_q    <= 1'b0;
         if (!rst_ni) begin
             busy_q     <= {P{1'b0}};
             spawning_q <= {P{1'b0}};
@@ -741,10 +755,7 @@ module csgrt_raytree #(
             pr_valid_q   <= 1'b0;
             pop_staged_q <= 1'b0;
         end else begin
-            if (pa_load) begin
-                pa_valid_q <= 1'b1;
-                pop_ctx_q  <= pop_ctx;
-            end
+            if (pa_load) pa_valid_q <= 1'b1;
             if (pop_stage) begin
                 pa_valid_q <= 1'b0;
                 pr_valid_q <= 1'b1;
@@ -758,37 +769,19 @@ module csgrt_raytree #(
             // shading issue
             if (sh_ready_i && sh_valid_q) sh_valid_q <= 1'b0;
             if (sh_issue) begin
-                sh_valid_q        <= 1'b1;
-                sh_ctx_q          <= shq_ctx;
-                shade_q[shq_ctx]  <= 1'b0;
+                sh_valid_q       <= 1'b1;
+                shade_q[shq_ctx] <= 1'b0;
             end
 
             if (ev_ct) begin
                 // ---- a shaded colour ray's contribution; the ray is done
-                acc_q[ctp_ctx_q] <= ctp_sum_q;
                 if (ctp_more_q) pop_q[ctp_ctx_q] <= 1'b1;
                 else begin
                     busy_q[ctp_ctx_q]      <= 1'b0;
                     ob_valid_q[ctp_slot_q] <= 1'b1;
-                    ob_acc_q[ctp_slot_q]   <= ctp_sum_q;
-                    ob_xy_q[ctp_slot_q]    <= ctp_xy_q;
                 end
             end else if (ev_ch) begin
                 // ---- a child of a hit
-                case (e_ch_kind)
-                    K_SHADOW: begin
-                        if (e_ch_lit) pend_q[e_ch_user] <= pend_q[e_ch_user] + 1'b1;   // pushed: rq_push
-                        else          lcol_q[{e_ch_user, e_ch_light}] <= 48'd0;
-                    end
-                    K_REFLECT, K_REFRACT, K_TIR: begin
-                        // a stacked child: one push, its entry chosen by kind (ch_entry)
-                        stw_q      <= 1'b1;
-                        stw_addr_q <= stk(e_ch_user, sp_q[e_ch_user]);
-                        stw_data_q <= e_ch_entry;
-                        sp_q[e_ch_user] <= sp_q[e_ch_user] + 1'b1;
-                    end
-                    default: ;   // CONTINUE: not asked for
-                endcase
                 if (e_ch_last) begin
                     spawning_q[e_ch_user] <= 1'b0;
                     if (pend_q[e_ch_user] == {PW{1'b0}} && !(e_ch_kind == K_SHADOW && e_ch_lit))
@@ -798,44 +791,79 @@ module csgrt_raytree #(
                 if (!e_h_shadow) begin
                     // ---- a colour ray came back
                     if (!e_h_colour_hit) begin
-                        acc_q[e_h_ctx] <= hpp_sum_q;
                         if (hpp_more_q) pop_q[e_h_ctx] <= 1'b1;
                         else begin
                             busy_q[e_h_ctx] <= 1'b0;
                             ob_valid_q[hpp_slot_q] <= 1'b1;
-                            ob_acc_q[hpp_slot_q]   <= hpp_sum_q;
-                            ob_xy_q[hpp_slot_q]    <= hpp_xy_q;
                         end
                     end else begin
                         // (the hit itself is written already: hit_write)
-                        pend_q[e_h_ctx] <= {PW{1'b0}};
                         if (e_want_spawn) spawning_q[e_h_ctx] <= 1'b1;   // requested: spq_push
                         else              shade_q[e_h_ctx]    <= 1'b1;
                     end
                 end else begin
                     // ---- a shadow ray came back (or goes on: rq_push)
-                    if (e_sh_ends) begin
-                        lcol_q[{e_h_ctx, e_h_light}] <= e_sh_color;
-                        pend_q[e_h_ctx] <= pend_q[e_h_ctx] - 1'b1;
-                        if (pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[e_h_ctx])
-                            shade_q[e_h_ctx] <= 1'b1;
-                    end
+                    if (e_sh_ends && pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[e_h_ctx])
+                        shade_q[e_h_ctx] <= 1'b1;
                 end
             end else if (ev_pop) begin
                 // ---- the next colour ray of a context, from its stack (pushed: rq_push)
-                sp_q[pop_ctx_q]  <= sp_q[pop_ctx_q] - 1'b1;
                 pop_q[pop_ctx_q] <= 1'b0;
             end else if (ev_cam) begin
                 // ---- a new pixel (its primary ray pushed: rq_push)
                 busy_q[e_free_ctx] <= 1'b1;
-                x_q[e_free_ctx]    <= e_cam_xy[11:0];
-                y_q[e_free_ctx]    <= e_cam_xy[23:12];
-                seq_q[e_free_ctx]  <= next_seq_q;
-                acc_q[e_free_ctx]  <= 39'd0;
-                sp_q[e_free_ctx]   <= {SPW{1'b0}};
             end
             // output buffer retire
             if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
+        end
+    end
+    always @(posedge clk_i) begin
+        stw_q <= 1'b0;
+        if (pa_load)  pop_ctx_q <= pop_ctx;
+        if (sh_issue) sh_ctx_q  <= shq_ctx;
+        if (ev_ct) begin
+            acc_q[ctp_ctx_q] <= ctp_sum_q;
+            if (!ctp_more_q) begin
+                ob_acc_q[ctp_slot_q] <= ctp_sum_q;
+                ob_xy_q[ctp_slot_q]  <= ctp_xy_q;
+            end
+        end else if (ev_ch) begin
+            case (e_ch_kind)
+                K_SHADOW: begin
+                    if (e_ch_lit) pend_q[e_ch_user] <= pend_q[e_ch_user] + 1'b1;   // pushed: rq_push
+                    else          lcol_q[{e_ch_user, e_ch_light}] <= 48'd0;
+                end
+                K_REFLECT, K_REFRACT, K_TIR: begin
+                    // a stacked child: one push, its entry chosen by kind (ch_entry)
+                    stw_q      <= 1'b1;
+                    stw_addr_q <= stk(e_ch_user, sp_q[e_ch_user]);
+                    stw_data_q <= e_ch_entry;
+                    sp_q[e_ch_user] <= sp_q[e_ch_user] + 1'b1;
+                end
+                default: ;   // CONTINUE: not asked for
+            endcase
+        end else if (ev_hp) begin
+            if (!e_h_shadow) begin
+                if (!e_h_colour_hit) begin
+                    acc_q[e_h_ctx] <= hpp_sum_q;
+                    if (!hpp_more_q) begin
+                        ob_acc_q[hpp_slot_q] <= hpp_sum_q;
+                        ob_xy_q[hpp_slot_q]  <= hpp_xy_q;
+                    end
+                end else
+                    pend_q[e_h_ctx] <= {PW{1'b0}};
+            end else if (e_sh_ends) begin
+                lcol_q[{e_h_ctx, e_h_light}] <= e_sh_color;
+                pend_q[e_h_ctx] <= pend_q[e_h_ctx] - 1'b1;
+            end
+        end else if (ev_pop)
+            sp_q[pop_ctx_q] <= sp_q[pop_ctx_q] - 1'b1;
+        else if (ev_cam) begin
+            x_q[e_free_ctx]   <= e_cam_xy[11:0];
+            y_q[e_free_ctx]   <= e_cam_xy[23:12];
+            seq_q[e_free_ctx] <= next_seq_q;
+            acc_q[e_free_ctx] <= 39'd0;
+            sp_q[e_free_ctx]  <= {SPW{1'b0}};
         end
     end
     wire [OBW:0] in_flight_d = next_seq_d - retire_d;
