@@ -829,10 +829,8 @@ module csgrt_raytree #(
             end
         end else if (ev_ch) begin
             case (e_ch_kind)
-                K_SHADOW: begin
+                K_SHADOW:   // an unlit light's colour: lcol_we_q
                     if (e_ch_lit) pend_q[e_ch_user] <= pend_q[e_ch_user] + 1'b1;   // pushed: rq_push
-                    else          lcol_q[{e_ch_user, e_ch_light}] <= 48'd0;
-                end
                 K_REFLECT, K_REFRACT, K_TIR: begin
                     // a stacked child: one push, its entry chosen by kind (ch_entry)
                     stw_q      <= 1'b1;
@@ -852,10 +850,8 @@ module csgrt_raytree #(
                     end
                 end else
                     pend_q[e_h_ctx] <= {PW{1'b0}};
-            end else if (e_sh_ends) begin
-                lcol_q[{e_h_ctx, e_h_light}] <= e_sh_color;
+            end else if (e_sh_ends)   // its light's colour: lcol_we_q
                 pend_q[e_h_ctx] <= pend_q[e_h_ctx] - 1'b1;
-            end
         end else if (ev_pop)
             sp_q[pop_ctx_q] <= sp_q[pop_ctx_q] - 1'b1;
         else if (ev_cam) begin
@@ -866,6 +862,32 @@ module csgrt_raytree #(
             sp_q[e_free_ctx]  <= {SPW{1'b0}};
         end
     end
+    // A light's colour for a shaded context: zero for a light a child did
+    // not light (its shadow ray is not traced), or what the light's shadow
+    // ray brought back. The write's enable, address and data are registers
+    // loaded in E0, the enable from the choice, address and data from the
+    // sources' valid bits alone (as rq_rec): decoded in E1 from the event
+    // registers, the enable ran through the events' priority and the
+    // {context, light} address's choice into the LUT RAM's write enables
+    // (tools/logic_depth.py: 14.58 ns, six LUT levels from ev_ct).
+    reg          lcol_we_q;
+    reg [CB+KW-1:0] lcol_addr_q;
+    reg [47:0]   lcol_data_q;
+    always @(posedge clk_i) begin
+        lcol_we_q   <= rst_ni && ((ev0_ch && ch_kind_i == K_SHADOW && !ch_lit_i) || (ev0_hp && h_shadow && hp_sh_ends));
+        lcol_addr_q <= ch_valid_i ? {ch_user_i, ch_light_i} : {h_ctx, h_light};
+        lcol_data_q <= ch_valid_i ? 48'd0 : hp_sh_color;
+        if (lcol_we_q) lcol_q[lcol_addr_q] <= lcol_data_q;
+    end
+`ifndef SYNTHESIS
+    // the write as decoded from the event registers
+    wire lcol_we_ev = (ev_ch && e_ch_kind == K_SHADOW && !e_ch_lit) || (ev_hp && e_h_shadow && e_sh_ends);
+    csgrt_check_same #(.WIDTH(1 + CB + KW + 48), .WHAT("the light colour write (lcol_we_q, lcol_addr_q, lcol_data_q)")) u_check_lcol (
+        .clk_i, .rst_ni,
+        .copy_i(lcol_we_q ? {1'b1, lcol_addr_q, lcol_data_q} : {(1 + CB + KW + 48){1'b0}}),
+        .orig_i(lcol_we_ev ? {1'b1, ev_ch ? {e_ch_user, e_ch_light, 48'd0} : {e_h_ctx, e_h_light, e_sh_color}}
+                           : {(1 + CB + KW + 48){1'b0}}));
+`endif
     wire [OBW:0] in_flight_d = next_seq_d - retire_d;
     always @(posedge clk_i)
         room_out_q <= !rst_ni || (in_flight_d < OB[OBW:0]);
