@@ -818,7 +818,6 @@ module csgrt_raytree #(
         end
     end
     always @(posedge clk_i) begin
-        stw_q <= 1'b0;
         if (pa_load)  pop_ctx_q <= pop_ctx;
         if (sh_issue) sh_ctx_q  <= shq_ctx;
         if (ev_ct) begin
@@ -827,41 +826,76 @@ module csgrt_raytree #(
                 ob_acc_q[ctp_slot_q] <= ctp_sum_q;
                 ob_xy_q[ctp_slot_q]  <= ctp_xy_q;
             end
-        end else if (ev_ch) begin
-            case (e_ch_kind)
-                K_SHADOW:   // an unlit light's colour: lcol_we_q
-                    if (e_ch_lit) pend_q[e_ch_user] <= pend_q[e_ch_user] + 1'b1;   // pushed: rq_push
-                K_REFLECT, K_REFRACT, K_TIR: begin
-                    // a stacked child: one push, its entry chosen by kind (ch_entry)
-                    stw_q      <= 1'b1;
-                    stw_addr_q <= stk(e_ch_user, sp_q[e_ch_user]);
-                    stw_data_q <= e_ch_entry;
-                    sp_q[e_ch_user] <= sp_q[e_ch_user] + 1'b1;
-                end
-                default: ;   // CONTINUE: not asked for
-            endcase
-        end else if (ev_hp) begin
-            if (!e_h_shadow) begin
-                if (!e_h_colour_hit) begin
-                    acc_q[e_h_ctx] <= hpp_sum_q;
-                    if (!hpp_more_q) begin
-                        ob_acc_q[hpp_slot_q] <= hpp_sum_q;
-                        ob_xy_q[hpp_slot_q]  <= hpp_xy_q;
-                    end
-                end else
-                    pend_q[e_h_ctx] <= {PW{1'b0}};
-            end else if (e_sh_ends)   // its light's colour: lcol_we_q
-                pend_q[e_h_ctx] <= pend_q[e_h_ctx] - 1'b1;
-        end else if (ev_pop)
-            sp_q[pop_ctx_q] <= sp_q[pop_ctx_q] - 1'b1;
-        else if (ev_cam) begin
+        end else if (ev_hp && !e_h_shadow && !e_h_colour_hit) begin
+            // a colour ray's miss
+            acc_q[e_h_ctx] <= hpp_sum_q;
+            if (!hpp_more_q) begin
+                ob_acc_q[hpp_slot_q] <= hpp_sum_q;
+                ob_xy_q[hpp_slot_q]  <= hpp_xy_q;
+            end
+        end else if (ev_cam) begin
             x_q[e_free_ctx]   <= e_cam_xy[11:0];
             y_q[e_free_ctx]   <= e_cam_xy[23:12];
             seq_q[e_free_ctx] <= next_seq_q;
             acc_q[e_free_ctx] <= 39'd0;
-            sp_q[e_free_ctx]  <= {SPW{1'b0}};
         end
     end
+    // The two counters of a context, its stack pointer (sp_q) and its
+    // shadow rays pending (pend_q): each event steps, clears or keeps one
+    // counter of one context. The operation and the context are registers
+    // loaded in E0, the operation from the choice, the context from the
+    // sources' valid bits alone (as rq_rec); E1 reads the counter and
+    // writes it. Decoded in E1 from the event registers, the write enables
+    // ran through the events' priority and the context's choice (tools/
+    // logic_depth.py: 13.46 ns from ev_ct into sp_q's enables).
+    //  - sp_q:   +1 a stacked child (its entry pushed, stw_*), -1 a pop,
+    //            0 a new pixel;
+    //  - pend_q: +1 a lit shadow ray, -1 a shadow ray's end, 0 a colour hit.
+    localparam [1:0] C_KEEP = 2'd0, C_INC = 2'd1, C_DEC = 2'd2, C_CLEAR = 2'd3;
+    reg  [1:0]    sp_op_q, pend_op_q;
+    reg  [CB-1:0] sp_ctx_q, pend_ctx_q;
+    wire          ch_stacked = ch_kind_i == K_REFLECT || ch_kind_i == K_REFRACT || ch_kind_i == K_TIR;
+    function [SPW-1:0] sp_next(input [1:0] op, input [SPW-1:0] v);
+        sp_next = (op == C_INC) ? v + 1'b1 : (op == C_DEC) ? v - 1'b1 : {SPW{1'b0}};
+    endfunction
+    function [PW-1:0] pend_next(input [1:0] op, input [PW-1:0] v);
+        pend_next = (op == C_INC) ? v + 1'b1 : (op == C_DEC) ? v - 1'b1 : {PW{1'b0}};
+    endfunction
+    always @(posedge clk_i) begin
+        if (!rst_ni) begin
+            sp_op_q   <= C_KEEP;
+            pend_op_q <= C_KEEP;
+        end else begin
+            sp_op_q   <= (ev0_ch && ch_stacked) ? C_INC : ev0_pop ? C_DEC : ev0_cam ? C_CLEAR : C_KEEP;
+            pend_op_q <= (ev0_ch && ch_kind_i == K_SHADOW && ch_lit_i) ? C_INC
+                       : (ev0_hp && h_shadow && hp_sh_ends) ? C_DEC
+                       : (ev0_hp && !h_shadow && h_colour_hit) ? C_CLEAR : C_KEEP;
+        end
+        sp_ctx_q   <= ch_valid_i ? ch_user_i : pop_staged_q ? pop_ctx_q : free_ctx;
+        pend_ctx_q <= ch_valid_i ? ch_user_i : h_ctx;
+        if (sp_op_q != C_KEEP)   sp_q[sp_ctx_q]     <= sp_next(sp_op_q, sp_q[sp_ctx_q]);
+        if (pend_op_q != C_KEEP) pend_q[pend_ctx_q] <= pend_next(pend_op_q, pend_q[pend_ctx_q]);
+        // a stacked child's entry, pushed a clock later (the stack's write port)
+        stw_q <= sp_op_q == C_INC;
+        if (sp_op_q == C_INC) begin
+            stw_addr_q <= stk(sp_ctx_q, sp_q[sp_ctx_q]);
+            stw_data_q <= e_ch_entry;
+        end
+    end
+`ifndef SYNTHESIS
+    // the counters' operations as decoded from the event registers
+    wire [1:0] sp_op_ev = (ev_ch && (e_ch_kind == K_REFLECT || e_ch_kind == K_REFRACT || e_ch_kind == K_TIR)) ? C_INC
+                        : ev_pop ? C_DEC : ev_cam ? C_CLEAR : C_KEEP;
+    wire [1:0] pend_op_ev = (ev_ch && e_ch_kind == K_SHADOW && e_ch_lit) ? C_INC
+                          : (ev_hp && e_h_shadow && e_sh_ends) ? C_DEC
+                          : (ev_hp && !e_h_shadow && e_h_colour_hit) ? C_CLEAR : C_KEEP;
+    wire [CB-1:0] sp_ctx_ev   = ev_ch ? e_ch_user : ev_pop ? pop_ctx_q : e_free_ctx;
+    wire [CB-1:0] pend_ctx_ev = ev_ch ? e_ch_user : e_h_ctx;
+    csgrt_check_same #(.WIDTH(4 + 2 * CB), .WHAT("the counters' operations (sp_op_q, sp_ctx_q, pend_op_q, pend_ctx_q)")) u_check_count (
+        .clk_i, .rst_ni,
+        .copy_i({sp_op_q, sp_op_q != C_KEEP ? sp_ctx_q : {CB{1'b0}}, pend_op_q, pend_op_q != C_KEEP ? pend_ctx_q : {CB{1'b0}}}),
+        .orig_i({sp_op_ev, sp_op_ev != C_KEEP ? sp_ctx_ev : {CB{1'b0}}, pend_op_ev, pend_op_ev != C_KEEP ? pend_ctx_ev : {CB{1'b0}}}));
+`endif
     // A light's colour for a shaded context: zero for a light a child did
     // not light (its shadow ray is not traced), or what the light's shadow
     // ray brought back. The write's enable, address and data are registers
