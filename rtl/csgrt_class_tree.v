@@ -230,9 +230,19 @@ module csgrt_class_tree #(
                     if (ce_i) op_q <= ops[slot_w[j-2][H-1:j]];
                 assign op = op_q;
             end
-            wire [CW-1:0] c;
-            csgrt_class_node #(.MAT_BITS(MB)) u_node (
-                .op_i(op), .l_i(on_right ? sib_c : path_w[j-1]), .r_i(on_right ? path_w[j-1] : sib_c), .c_o(c));
+            // The node for either side of the path, and the side's choice
+            // after them: with the choice in front, the slot's bit (about 60
+            // loads) ran through the operands' multiplexers into the whole
+            // table (tools/logic_depth.py: 7 LUT levels from slot_w into
+            // path_q). A sibling is IN m or OUT (its "from" field is zero),
+            // so each node, with one operand of that form, maps to less than
+            // the full table.
+            wire [CW-1:0] c_sib_right, c_sib_left;
+            csgrt_class_node #(.MAT_BITS(MB)) u_node_r (
+                .op_i(op), .l_i(path_w[j-1]), .r_i(sib_c), .c_o(c_sib_right));
+            csgrt_class_node #(.MAT_BITS(MB)) u_node_l (
+                .op_i(op), .l_i(sib_c), .r_i(path_w[j-1]), .c_o(c_sib_left));
+            wire [CW-1:0] c = on_right ? c_sib_left : c_sib_right;
             reg [CW-1:0] path_q;
             reg [H-1:0]  slot_q;
             always @(posedge clk_i)
