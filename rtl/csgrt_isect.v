@@ -29,7 +29,8 @@
 // arithmetically; every division truncates toward zero and saturates):
 //   P0 mul  (2)  A d and A o products, 18 multipliers B x B
 //   P1 add  (1)  u = rnd(A d, FC), w = rnd(A o + p<<F, FC), w + rnd(p, FC-F)
-//   P2 mul  (2)  d.u, d.w, o.(w + rnd(p)) products, 9 multipliers
+//   P2 mul  (3)  d.u, d.w, o.(w + rnd(p)) products, 9 multipliers, each
+//                with a fabric register after it
 //   P3 add  (1)  a = rnd(d.u, F), b = rnd(d.w, F), c = rnd(o.(w+p'), F) + rnd(q, FC-F)
 //   P4 mul  (2)  b*b, a*c
 //   P5 add  (1)  disc = b*b - a*c, the flags a == 0, b == 0, b < 0, c <= 0, a < 0
@@ -42,8 +43,8 @@
 //                root: second event = first)
 //   P10 out (0)  drop of an equal pair, count; into the skid
 //   skid    (1)  csgrt_skid
-// Latency: 2F+20 clocks without back-pressure (BITS 12: 38, 16: 46, 24: 62,
-// 32: 78). Throughput: one ray-primitive pair per clock.
+// Latency: 2F+21 clocks without back-pressure (BITS 12: 39, 16: 47, 24: 63,
+// 32: 79). Throughput: one ray-primitive pair per clock.
 // Handshake: valid/ready on both sides, a transaction moves when valid and
 // ready are both high at a rising edge. All stages advance on one global
 // enable, the output skid buffer's registered ready, which is also ready_o:
@@ -214,20 +215,24 @@ module csgrt_isect #(
     end
 
     // ---- P2: d.u, d.w, o.(w + rnd(p)) --------------------------------------
+    // The products come out of a fabric register (OUT_REG): P3's three-
+    // product sums, straight from the blocks' output registers, were the
+    // routed critical path of 1ac57bd (a block's output -> 4.4 ns of route
+    // -> the tiles' sum -> the sum of three: 84.00 MHz, docs/fpga.md).
     wire [3*(B+UW)-1:0]  pa, pb;
     wire [3*(B+WPW)-1:0] pc;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_p2
             wire unused_va, unused_vb, unused_vc;
-            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW)) u_mul_a (
+            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1)) u_mul_a (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p1_valid_q),
                 .a_i(p1_d_q[i*B +: B]), .b_i(p1_u_q[i*UW +: UW]),
                 .valid_o(unused_va), .p_o(pa[i*(B+UW) +: B+UW]));
-            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW)) u_mul_b (
+            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1)) u_mul_b (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p1_valid_q),
                 .a_i(p1_d_q[i*B +: B]), .b_i(p1_w_q[i*UW +: UW]),
                 .valid_o(unused_vb), .p_o(pb[i*(B+UW) +: B+UW]));
-            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(WPW)) u_mul_c (
+            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(WPW), .OUT_REG(1)) u_mul_c (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p1_valid_q),
                 .a_i(p1_o_q[i*B +: B]), .b_i(p1_wp_q[i*WPW +: WPW]),
                 .valid_o(unused_vc), .p_o(pc[i*(B+WPW) +: B+WPW]));
@@ -236,7 +241,7 @@ module csgrt_isect #(
     wire          p2_valid;
     wire [PRW-1:0] p2_qr;
     wire [LW-1:0] p2_leaf;
-    csgrt_delay #(.WIDTH(PRW + LW), .STAGES(2)) u_dly2 (
+    csgrt_delay #(.WIDTH(PRW + LW), .STAGES(3)) u_dly2 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p1_valid_q),
         .data_i({p1_leaf_q, p1_qr_q}), .valid_o(p2_valid), .data_o({p2_leaf, p2_qr}));
 

@@ -24,6 +24,12 @@
 //
 // Latency: 2 clocks (input register, output register), counted in enabled
 // clocks: every register, valid included, only moves when ce_i is high.
+// OUT_REG = 1 adds a fabric register after the product (after a wide
+// product's tile sum): 3 clocks. The consumer's stage then starts at
+// flip-flops the placer can put beside its own logic, not at the blocks'
+// output registers in the DSP columns (the routed critical path of a build
+// was a block's output -> 4.4 ns of route -> the tiles' sum -> the
+// consumer's three-product sum, docs/fpga.md).
 // Handshake: none of its own. valid_i is shifted alongside the operands and
 // comes out as valid_o with the product; ce_i is the stall input of the
 // enclosing pipeline (low = hold every register).
@@ -35,7 +41,8 @@ module csgrt_mul #(
     parameter B_WIDTH = 18,   // width of signed operand b (>= 2)
     // CSGRT_ECP5_DSP: a tile whose chunk widths' product is at most this is
     // built in the fabric (default 36: the 6 x 6 corner of a 24 x 24 product)
-    parameter LUT_TILE_MAX = `CSGRT_LUT_TILE_MAX
+    parameter LUT_TILE_MAX = `CSGRT_LUT_TILE_MAX,
+    parameter OUT_REG = 0     // 1: one more register after the product (latency 3)
 ) (
     input  wire                       clk_i,
     input  wire                       rst_ni,   // synchronous, active low (valid bits only)
@@ -59,7 +66,7 @@ module csgrt_mul #(
             valid_q2 <= valid_q;
         end
     end
-    assign valid_o = valid_q2;
+    wire [P_WIDTH-1:0] p_w;   // the product after the two registers (and the tiles' sum)
 
 `ifndef CSGRT_ECP5_DSP
     // ---- behavioural
@@ -81,7 +88,7 @@ module csgrt_mul #(
             p_q <= p_d;
         end
     end
-    assign p_o = p_q;
+    assign p_w = p_q;
 `else
     // ---- ECP5: tiles of 18-bit chunks
     // Operand x of width W is sum_k x_k 2^(18k), chunk k < N-1 unsigned 18
@@ -172,13 +179,30 @@ module csgrt_mul #(
         sum = {P_WIDTH{1'b0}};
         for (t = 0; t < NA * NB; t = t + 1) sum = sum + tile[t*P_WIDTH +: P_WIDTH];
     end
-    assign p_o = sum;
+    assign p_w = sum;
 `endif
 
     generate
-        if (A_WIDTH < 2 || B_WIDTH < 2 || LUT_TILE_MAX < 0) begin : g_bad_width
+        if (OUT_REG != 0) begin : g_out_reg
+            reg                valid_q3;
+            reg [P_WIDTH-1:0] p_q3;
+            always @(posedge clk_i) begin
+                if (!rst_ni)   valid_q3 <= 1'b0;
+                else if (ce_i) valid_q3 <= valid_q2;
+                if (ce_i) p_q3 <= p_w;
+            end
+            assign valid_o = valid_q3;
+            assign p_o     = p_q3;
+        end else begin : g_out_direct
+            assign valid_o = valid_q2;
+            assign p_o     = p_w;
+        end
+    endgenerate
+
+    generate
+        if (A_WIDTH < 2 || B_WIDTH < 2 || LUT_TILE_MAX < 0 || OUT_REG < 0 || OUT_REG > 1) begin : g_bad_width
             initial begin
-                $display("ERROR %m: csgrt_mul A_WIDTH and B_WIDTH must be >= 2, LUT_TILE_MAX >= 0");
+                $display("ERROR %m: csgrt_mul A_WIDTH and B_WIDTH must be >= 2, LUT_TILE_MAX >= 0, OUT_REG 0 or 1");
                 $finish;
             end
         end
