@@ -27,12 +27,12 @@
 //
 // Pipeline (every rounding is round half up: add 2^(k-1), shift right
 // arithmetically; every division truncates toward zero and saturates):
-//   P0 mul  (2)  A d and A o products, 18 multipliers B x B
+//   P0 mul  (3)  A d and A o products, 18 multipliers B x B (each with a
+//                fabric register after it, as P2's and P4's)
 //   P1 add  (1)  u = rnd(A d, FC), w = rnd(A o + p<<F, FC), w + rnd(p, FC-F)
-//   P2 mul  (3)  d.u, d.w, o.(w + rnd(p)) products, 9 multipliers, each
-//                with a fabric register after it
+//   P2 mul  (3)  d.u, d.w, o.(w + rnd(p)) products, 9 multipliers
 //   P3 add  (1)  a = rnd(d.u, F), b = rnd(d.w, F), c = rnd(o.(w+p'), F) + rnd(q, FC-F)
-//   P4 mul  (2)  b*b, a*c
+//   P4 mul  (3)  b*b, a*c
 //   P5 add  (1)  disc = b*b - a*c, the flags a == 0, b == 0, b < 0, c <= 0, a < 0
 //   P6 sqrt (F+6) s = floor(sqrt(disc)) (csgrt_sqrt_core)
 //   P7 add  (1)  qq = -(b + sgn(b) s) with sgn(0) = +1; divider operands:
@@ -43,8 +43,8 @@
 //                root: second event = first)
 //   P10 out (0)  drop of an equal pair, count; into the skid
 //   skid    (1)  csgrt_skid
-// Latency: 2F+21 clocks without back-pressure (BITS 12: 39, 16: 47, 24: 63,
-// 32: 79). Throughput: one ray-primitive pair per clock.
+// Latency: 2F+23 clocks without back-pressure (BITS 12: 41, 16: 49, 24: 65,
+// 32: 81). Throughput: one ray-primitive pair per clock.
 // Handshake: valid/ready on both sides, a transaction moves when valid and
 // ready are both high at a rising edge. All stages advance on one global
 // enable, the output skid buffer's registered ready, which is also ready_o:
@@ -117,6 +117,14 @@ module csgrt_isect #(
     csgrt_check_same #(.WHAT("ready_q")) u_check_ready (.clk_i, .rst_ni, .copy_i(ready_q), .orig_i(en));
 
     // ---- P0: A d and A o ---------------------------------------------------
+    // Every multiplier of the unit (P0, P2, P4) hands its product over
+    // through a fabric register (csgrt_mul's OUT_REG): the sums behind them
+    // then start at flip-flops the placer can put beside them, not at the
+    // blocks' output registers in the DSP columns. P3's three-product sums,
+    // straight from the blocks, were the routed critical path of 1ac57bd (a
+    // block's output -> 4.4 ns of route -> the tiles' sum -> the sum of
+    // three: 84.00 MHz, docs/fpga.md); P1's sums and P5's subtract have the
+    // same form.
     // A(i,j) -> coefficient index: diagonal i, (0,1) 3, (0,2) 4, (1,2) 5.
     wire [9*2*B-1:0] pu, pw;   // products (3i+j), 2B bits each
     genvar i, j;
@@ -125,11 +133,11 @@ module csgrt_isect #(
             for (j = 0; j < 3; j = j + 1) begin : g_p0_col
                 localparam CI = (i == j) ? i : (i + j == 1) ? 3 : (i + j == 2) ? 4 : 5;
                 wire unused_vu, unused_vw;
-                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B)) u_mul_u (
+                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1)) u_mul_u (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(valid_i),
                     .a_i(coef_i[CI*B +: B]), .b_i(d_i[j*B +: B]),
                     .valid_o(unused_vu), .p_o(pu[(3*i+j)*2*B +: 2*B]));
-                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B)) u_mul_w (
+                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1)) u_mul_w (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(valid_i),
                     .a_i(coef_i[CI*B +: B]), .b_i(o_i[j*B +: B]),
                     .valid_o(unused_vw), .p_o(pw[(3*i+j)*2*B +: 2*B]));
@@ -141,7 +149,7 @@ module csgrt_isect #(
     localparam SD0W = 3 * B + 3 * B + 3 * B + B + LW;
     wire            p0_valid;
     wire [SD0W-1:0] p0_side;
-    csgrt_delay #(.WIDTH(SD0W), .STAGES(2)) u_dly0 (
+    csgrt_delay #(.WIDTH(SD0W), .STAGES(3)) u_dly0 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(valid_i),
         .data_i({leaf_i, coef_i[9*B +: B], coef_i[6*B +: 3*B], d_i, o_i}),
         .valid_o(p0_valid), .data_o(p0_side));
@@ -215,10 +223,6 @@ module csgrt_isect #(
     end
 
     // ---- P2: d.u, d.w, o.(w + rnd(p)) --------------------------------------
-    // The products come out of a fabric register (OUT_REG): P3's three-
-    // product sums, straight from the blocks' output registers, were the
-    // routed critical path of 1ac57bd (a block's output -> 4.4 ns of route
-    // -> the tiles' sum -> the sum of three: 84.00 MHz, docs/fpga.md).
     wire [3*(B+UW)-1:0]  pa, pb;
     wire [3*(B+WPW)-1:0] pc;
     generate
@@ -286,10 +290,10 @@ module csgrt_isect #(
     wire [2*BW-1:0]   p4_bb;
     wire [AW+CW-1:0]  p4_ac;
     wire              unused_vbb, unused_vac;
-    csgrt_mul #(.A_WIDTH(BW), .B_WIDTH(BW)) u_mul_bb (
+    csgrt_mul #(.A_WIDTH(BW), .B_WIDTH(BW), .OUT_REG(1)) u_mul_bb (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p3_valid_q),
         .a_i(p3_b_q), .b_i(p3_b_q), .valid_o(unused_vbb), .p_o(p4_bb));
-    csgrt_mul #(.A_WIDTH(AW), .B_WIDTH(CW)) u_mul_ac (
+    csgrt_mul #(.A_WIDTH(AW), .B_WIDTH(CW), .OUT_REG(1)) u_mul_ac (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p3_valid_q),
         .a_i(p3_a_q), .b_i(p3_c_q), .valid_o(unused_vac), .p_o(p4_ac));
     wire          p4_valid;
@@ -297,7 +301,7 @@ module csgrt_isect #(
     wire [BW-1:0] p4_b;
     wire [CW-1:0] p4_c;
     wire [LW-1:0] p4_leaf;
-    csgrt_delay #(.WIDTH(AW + BW + CW + LW), .STAGES(2)) u_dly4 (
+    csgrt_delay #(.WIDTH(AW + BW + CW + LW), .STAGES(3)) u_dly4 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p3_valid_q),
         .data_i({p3_leaf_q, p3_c_q, p3_b_q, p3_a_q}), .valid_o(p4_valid),
         .data_o({p4_leaf, p4_c, p4_b, p4_a}));

@@ -77,7 +77,7 @@ def test_sweep_rows(ctx):
     check(int(e["cycles_per_frame"]) > SIM_W * SIM_H, f"cycles per frame {e['cycles_per_frame']}")
     check(int(e["rtl_pixels"]) == SIM_W * SIM_H, f"RTL pixels {e['rtl_pixels']}")
     check(e["rtl_matched"] == e["rtl_pixels"], f"RTL matched {e['rtl_matched']} of {e['rtl_pixels']} pixels")
-    check(int(e["isect_latency"]) == 2 * (BITS - 3) + 21, f"isect latency {e['isect_latency']}")
+    check(int(e["isect_latency"]) == 2 * (BITS - 3) + 23, f"isect latency {e['isect_latency']}")
     check(int(e["pixel_latency"]) > int(e["isect_latency"]),
           f"pixel latency {e['pixel_latency']} not above the intersection unit's {e['isect_latency']}")
     check(float(e["sim_wall_s"]) > 0, "Verilator wall time")

@@ -9,7 +9,7 @@
 // saturation happen, with unit directions (random or axis-aligned) and
 // origins anywhere in the coordinate range; coverage counters must all be
 // non-zero. Random input gaps and output back-pressure; a back-to-back run
-// checks latency 2F+21 and full throughput.
+// checks latency 2F+23 and full throughput.
 #include "Vtb_isect.h"
 #include "compile.h"
 #include "fixed.h"
@@ -379,9 +379,9 @@ void run_width(size_t count, double gap, double stall, uint64_t seed, bool check
     std::printf("isect BITS=%d: %s\n  coverage: %s\n", NB, r.summary().c_str(), cov.str().c_str());
     if (check_latency) {
         const int F = NB - 3;
-        EXPECT_EQ(r.min_latency, 2 * F + 21);
-        EXPECT_EQ(r.max_latency, 2 * F + 21);
-        EXPECT_LE(r.cycles, cases.size() + size_t(2 * F + 21) + 2 + 201);
+        EXPECT_EQ(r.min_latency, 2 * F + 23);
+        EXPECT_EQ(r.max_latency, 2 * F + 23);
+        EXPECT_LE(r.cycles, cases.size() + size_t(2 * F + 23) + 2 + 201);
     } else {
         for (const char* key : {"a=0,b=0", "linear", "disc<0", "disc=0", "b=0 (a!=0)", "qq=0", "equal pair dropped",
                                 "two events", "NegInf", "PosInf", "finite"})
