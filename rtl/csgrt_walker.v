@@ -255,7 +255,15 @@ module csgrt_walker #(
     // in the clock its hit comes out of the tree one more token issues,
     // which the tree's output drops (done_q is set by then).
     wire          stop   = done_q[seq_q];
-    wire          issue  = ce_ctl && act_q && !stop;
+    // walking_q = act_q && !stop as a register of its own, loaded with the
+    // next values of act_q, seq_q and done_q (below): issue and so the
+    // crossing's bank write (the walker's longest path, tools/
+    // logic_depth.py: the sorter's head through the tie-group, probe and
+    // issue decisions into the flag banks, 14.6 ns) read one register
+    // instead of the state bits and the bank's done flag behind seq_q.
+    // A simulation stops if the two differ.
+    reg           walking_q;
+    wire          issue  = ce_ctl && walking_q;
     // the event sorter compares the head's t with the previously popped
     // event's (registered, ev_same_t_i): no comparator on the pop path
     wire          later  = ev_valid_i && gv_q && ev_same_t_i;
@@ -410,6 +418,20 @@ module csgrt_walker #(
             if (fin_hit) done_q[t_seq] <= 1'b1;
         end
     end
+    // the next act_q && !done_q[seq_q], from the updates above: a load
+    // starts the other bank's ray (its done flag cleared, unless its hit
+    // comes out in the same clock), the end of a ray stops it, and a hit
+    // of the walking bank's ray stops it
+    always @(posedge clk_i)
+        if (!rst_ni)
+            walking_q <= 1'b0;
+        else if (ce) begin
+            if (load)            walking_q <= !(fin_hit && t_seq == !seq_q);
+            else if (ray_done_o) walking_q <= 1'b0;
+            else                 walking_q <= act_q && !stop && !(fin_hit && t_seq == seq_q);
+        end
+    csgrt_check_same #(.WHAT("walking_q")) u_check_walking (
+        .clk_i, .rst_ni, .copy_i(walking_q), .orig_i(act_q && !stop));
 
 `ifndef SYNTHESIS
     // gfl_q as it was: loaded at the issue of a tie group's first member only
