@@ -727,12 +727,13 @@ module csgrt_raytree #(
     // the spawn request of a colour hit, loaded at the end of E0 (pushed in E1)
     always @(posedge clk_i)
         spq_data <= {h_ior_to, h_ior_from, want_refr, h_ctx, want_refl, light_mask, h_coef, h_t, h_d, h_o};
-    // The events' state updates, in two blocks. The control state (which
-    // contexts are busy, spawning, waiting to be shaded or popped, which
-    // output slots are full, the valid bits of the pop and shading stages)
-    // is reset. The context data (accumulators, stack pointers, pending
-    // shadow counts, light colours, pixels, output buffer entries, the
-    // stack write and the two staged context numbers) is not: every entry
+    // The events' state updates. The control state (which contexts are
+    // busy, spawning, waiting to be shaded or popped, which output slots
+    // are full, the valid bits of the pop and shading stages; the first
+    // block below) is reset. The context data (accumulators, pixels, output
+    // buffer entries and the two staged context numbers in the second
+    // block; stack pointers, pending shadow counts and the stack write in
+    // the counters' block; light colours in theirs) is not: every entry
     // is written before it is read (a new pixel writes its accumulator and
     // stack pointer, a colour hit its pending count, each of its lights'
     // shadow rays its light colour before the context is shaded, a retired
@@ -854,7 +855,10 @@ module csgrt_raytree #(
     localparam [1:0] C_KEEP = 2'd0, C_INC = 2'd1, C_DEC = 2'd2, C_CLEAR = 2'd3;
     reg  [1:0]    sp_op_q, pend_op_q;
     reg  [CB-1:0] sp_ctx_q, pend_ctx_q;
-    wire          ch_stacked = ch_kind_i == K_REFLECT || ch_kind_i == K_REFRACT || ch_kind_i == K_TIR;
+    // a child kept on its context's stack (not a shadow ray)
+    function stacked(input [2:0] kind);
+        stacked = kind == K_REFLECT || kind == K_REFRACT || kind == K_TIR;
+    endfunction
     function [SPW-1:0] sp_next(input [1:0] op, input [SPW-1:0] v);
         sp_next = (op == C_INC) ? v + 1'b1 : (op == C_DEC) ? v - 1'b1 : {SPW{1'b0}};
     endfunction
@@ -866,7 +870,7 @@ module csgrt_raytree #(
             sp_op_q   <= C_KEEP;
             pend_op_q <= C_KEEP;
         end else begin
-            sp_op_q   <= (ev0_ch && ch_stacked) ? C_INC : ev0_pop ? C_DEC : ev0_cam ? C_CLEAR : C_KEEP;
+            sp_op_q   <= (ev0_ch && stacked(ch_kind_i)) ? C_INC : ev0_pop ? C_DEC : ev0_cam ? C_CLEAR : C_KEEP;
             pend_op_q <= (ev0_ch && ch_kind_i == K_SHADOW && ch_lit_i) ? C_INC
                        : (ev0_hp && h_shadow && hp_sh_ends) ? C_DEC
                        : (ev0_hp && !h_shadow && h_colour_hit) ? C_CLEAR : C_KEEP;
@@ -884,7 +888,7 @@ module csgrt_raytree #(
     end
 `ifndef SYNTHESIS
     // the counters' operations as decoded from the event registers
-    wire [1:0] sp_op_ev = (ev_ch && (e_ch_kind == K_REFLECT || e_ch_kind == K_REFRACT || e_ch_kind == K_TIR)) ? C_INC
+    wire [1:0] sp_op_ev = (ev_ch && stacked(e_ch_kind)) ? C_INC
                         : ev_pop ? C_DEC : ev_cam ? C_CLEAR : C_KEEP;
     wire [1:0] pend_op_ev = (ev_ch && e_ch_kind == K_SHADOW && e_ch_lit) ? C_INC
                           : (ev_hp && e_h_shadow && e_sh_ends) ? C_DEC
