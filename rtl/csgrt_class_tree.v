@@ -18,6 +18,9 @@
 //                that choice comes late in the walker's clock: made here
 //                after the reads by slot it is one LUT level at their end,
 //                not one in front of a 2^H-to-1 choice.)
+//   sib_flag_i   the flag of the slot's sibling (slot_i ^ 1) in those flags,
+//                read by the caller (csgrt_walker: a register read a clock
+//                ahead, not a 2^H-to-1 choice behind the event's slot)
 //   slot_i       the event's slot: BORDER 0,m when entering_i, else BORDER m,0
 //   tag_i        TAG_WIDTH bits carried alongside unchanged
 // Output: class_o {kind, from, to} as csgrt_class_node (kind 0 OUT, 1 IN,
@@ -69,6 +72,7 @@ module csgrt_class_tree #(
     input  wire [(1<<TREE_HEIGHT)-1:0]      flags_i,
     input  wire [(1<<TREE_HEIGHT)-1:0]      flags_alt_i,   // the event's flags when alt_i
     input  wire                             alt_i,
+    input  wire                             sib_flag_i,    // (alt_i ? flags_alt_i : flags_i)[slot_i ^ 1]
     input  wire [TREE_HEIGHT-1:0]           slot_i,
     input  wire                             entering_i,
     input  wire [TAG_WIDTH-1:0]             tag_i,
@@ -111,7 +115,13 @@ module csgrt_class_tree #(
     // ---- stage 0: the event's reads by its slot, registered --------------
     wire [H-1:0]  sib_slot = slot_i ^ {{(H-1){1'b0}}, 1'b1};
     wire [MB-1:0] slot_m   = slot_mat_i[slot_i*MB +: MB];
-    wire          sib_flag = alt_i ? flags_alt_i[sib_slot] : flags_i[sib_slot];
+    // the sibling's flag comes from the caller (csgrt_walker reads it a
+    // clock ahead, from registers); a simulation check compares it with
+    // the read here
+    wire          sib_flag = sib_flag_i;
+    csgrt_check_same #(.WHAT("sib_flag_i (the sibling slot's flag)")) u_check_sib (
+        .clk_i, .rst_ni, .copy_i(valid_i && ce_i && sib_flag_i),
+        .orig_i(valid_i && ce_i && (alt_i ? flags_alt_i[sib_slot] : flags_i[sib_slot])));
     // The sibling slot's {used, material} and its flag are registered
     // apart; stage 1 makes its IN/OUT value of them (IN m when used and
     // IN). As one value here, the flag read (the slowest of stage 0's

@@ -89,6 +89,10 @@
 // walker's tie-group decision (csgrt_walker's `later`) needs no t
 // comparator on its way to ev_pop_i.
 //
+// ev_next_slot_o: the slot of the event after the head (second_q; don't
+// care when the head is the ray's last), the head's slot after a pop. The
+// walker reads its flag banks there a clock ahead (csgrt_walker's fh_q).
+//
 // Latency: a leaf result accepted at edge k is in the fill bank after edge
 // k+1; a ray whose last leaf is accepted at edge k is on the drain side
 // (ray_valid_o) after edge k+2 if the drain bank is free. The same with
@@ -149,6 +153,7 @@ module csgrt_event_sort #(
     output wire [TREE_HEIGHT-1:0]   ev_slot_o,
     output wire                     ev_entering_o,
     output wire                     ev_same_t_o,      // its t equals the ray's previously popped event's
+    output wire [TREE_HEIGHT-1:0]   ev_next_slot_o,   // the next event's slot (the head's after a pop)
     input  wire                     ev_pop_i
 );
 
@@ -384,9 +389,10 @@ module csgrt_event_sort #(
     assign ev_entering_o = head[0];
     // the head's t against the next cell's: the same-t bit after a pop
     reg  same_t_q;
-    wire [DW-1:0] second = second_q;       // only its t is compared
-    wire [DW-UW-1:0] unused_second = second[DW-UW-1:0];
+    wire [DW-1:0] second = second_q;       // its t is compared, its slot read ahead
+    wire [DW-UW-H-1:0] unused_second = {second[DW-UW-1:H+1], second[0]};
     wire next_same_t = second[DW-1 -: UW] == head[DW-1 -: UW];
+    assign ev_next_slot_o = second[1 +: H];
     assign ev_same_t_o = same_t_q;
 
     // ---- secondary rays: info stream, t limit, inherited flags, look-behind

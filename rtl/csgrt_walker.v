@@ -122,6 +122,7 @@ module csgrt_walker #(
     input  wire [TREE_HEIGHT-1:0]   ev_slot_i,
     input  wire                     ev_entering_i,
     input  wire                     ev_same_t_i,   // ev_t_i equals the ray's previous popped event's (csgrt_event_sort)
+    input  wire [TREE_HEIGHT-1:0]   ev_next_slot_i,   // the next event's slot, the head's after a pop (csgrt_event_sort)
     output wire                     ev_pop_o,
     // hit records
     output wire                     valid_o,
@@ -269,13 +270,18 @@ module csgrt_walker #(
     wire          later  = ev_valid_i && gv_q && ev_same_t_i;
     wire          probe  = later && !pr_q;
     // The token is classified with gfl_q (a probe) or fl_cur. probe comes
-    // late (from the sorter's head through the tie-group test), so each
-    // bank is read at the event's slot first and probe chooses between the
-    // bits, here and in the tree (its alt_i): in front of the 2^H-to-1
+    // late (from the sorter's head through the tie-group test), so the
+    // flags are read at the event's slot first and probe chooses between
+    // the bits, here and in the tree (its alt_i): in front of the 2^H-to-1
     // choices it made the walker's paths into the tree's stage 0 ten LUT
-    // levels long (tools/logic_depth.py).
-    wire          fl_cur_at = seq_q ? fl1_q[ev_slot_i] : fl0_q[ev_slot_i];
-    wire          fl_tok_at = probe ? gfl_q[ev_slot_i] : fl_cur_at;   // the token's flag of the event's slot
+    // levels long (tools/logic_depth.py). The bits at the head's slot and
+    // at its sibling (the tree's stage 0) are registers, fh_q and gh_q,
+    // read a clock ahead (below): read here from the sorter's head, the
+    // flag went on through probe and skip into the pending crossing
+    // (g_sec's pv_q), the routed critical path of the 231e4db build.
+    reg  [1:0]    fh_q;                       // fl_cur at the head's slot (bit 0) and its sibling (bit 1)
+    reg  [1:0]    gh_q;                       // gfl_q at the same two slots
+    wire          fl_tok_at = probe ? gh_q[0] : fh_q[0];   // the token's flag of the event's slot
     wire          skip   = !ev_valid_i || (fl_tok_at == ev_entering_i);
     wire          toggle = !skip && !probe;   // the token crosses (flag toggled)
     wire          crossing = issue && !probe && ev_valid_i;   // a walk token of an event
@@ -285,13 +291,49 @@ module csgrt_walker #(
     assign ev_pop_o   = issue && ev_valid_i && !probe;
     assign ray_done_o = ce_ctl && act_q && (stop || last);
 
+    // fh_q and gh_q follow the bank and gfl_q at the head's slot (p = 0)
+    // and its sibling (p = 1). The head moves only at a pop, which is a
+    // crossing (ev_pop_o), to the sorter's next event (ev_next_slot_i);
+    // the bank changes only at a crossing (the head's slot becomes
+    // entering: the next slot's bit read from the bank before that write
+    // takes it when the two are the same slot) or at a load, which gives
+    // the new ray's bank ray_flags_i under a head that stays until the
+    // ray's first pop (the sorter hands a ray over only while the walker
+    // is idle, and a load comes a clock after it at the earliest).
+    // gfl_q takes fl_cur on every clock whose head is not a later member
+    // (above): at a pop the bank's bit at the next slot before the write,
+    // else fh_q. After a load gh_q is stale until the first clock without
+    // a later member, as gfl_q is, and the first issue of a ray is not one
+    // (gv_q clear). Simulation checks compare both with the reads from the
+    // sorter's head at every issue.
+    genvar p;
+    generate
+        for (p = 0; p < 2; p = p + 1) begin : g_head_flag
+            wire [H-1:0] next_at = ev_next_slot_i ^ p[H-1:0];   // the next head's slot (or sibling)
+            wire [H-1:0] head_at = ev_slot_i ^ p[H-1:0];
+            wire         cur_next = seq_q ? fl1_q[next_at] : fl0_q[next_at];   // before this clock's write
+            always @(posedge clk_i)
+                if (ce) begin
+                    if (load)          fh_q[p] <= ray_flags_i[head_at];
+                    else if (crossing) fh_q[p] <= (next_at == ev_slot_i) ? ev_entering_i : cur_next;
+                    if (crossing)      gh_q[p] <= later ? gfl_q[next_at] : cur_next;
+                    else if (!later)   gh_q[p] <= fh_q[p];
+                end
+            csgrt_check_same #(.WIDTH(2), .WHAT("fh_q / gh_q (the flags at the head's slot)")) u_check_head_flag (
+                .clk_i, .rst_ni,
+                .copy_i(issue && ev_valid_i ? {fh_q[p], probe && gh_q[p]} : 2'b00),
+                .orig_i(issue && ev_valid_i ? {fl_cur[head_at], probe && gfl_q[head_at]} : 2'b00));
+        end
+    endgenerate
+
     wire [BGW-1:0] tag_base = {seq_q, skip, last, probe, later, ev_t_i, ev_leaf_i, ev_slot_i, ev_entering_i};
     wire [GW-1:0]  tag_in;
 
     csgrt_class_tree #(.TREE_HEIGHT(H), .MAT_BITS(MB), .TAG_WIDTH(GW)) u_tree (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce),
         .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
-        .valid_i(issue), .flags_i(fl_cur), .flags_alt_i(gfl_q), .alt_i(probe), .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
+        .valid_i(issue), .flags_i(fl_cur), .flags_alt_i(gfl_q), .alt_i(probe), .sib_flag_i(probe ? gh_q[1] : fh_q[1]),
+        .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
         .valid_o(tv), .class_o(tc), .border_o(border), .tag_o(tg));
 
     // ---- flags just before the hit --------------------------------------

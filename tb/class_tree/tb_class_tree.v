@@ -1,7 +1,9 @@
 `default_nettype none
 // tb_class_tree — Verilator top for tb_class_tree.cpp: csgrt_class_tree at
 // TREE_HEIGHT 8, 3, 2 and 1 (the path's edge cases), one clock each. Each
-// instance's ports are h<H>_<port> (TREE_PORTS in tb_class_tree.cpp).
+// instance's ports are h<H>_<port> (TREE_PORTS in tb_class_tree.cpp). The
+// sibling slot's flag (sib_flag_i) is read here from the flags, as
+// csgrt_walker reads it ahead from its banks.
 
 // the top's ports of the instance of height H (2^H = NS slots)
 `define TB_TREE_PORTS(H, NS) \
@@ -29,7 +31,9 @@
         .clk_i(h``H``_clk_i), .rst_ni(h``H``_rst_ni), .ce_i(h``H``_ce_i), \
         .node_op_i(h``H``_node_op_i), .slot_mat_i(h``H``_slot_mat_i), .slot_used_i(h``H``_slot_used_i), \
         .valid_i(h``H``_valid_i), .flags_i(h``H``_flags_i), \
-        .flags_alt_i(h``H``_flags_alt_i), .alt_i(h``H``_alt_i), .slot_i(h``H``_slot_i), \
+        .flags_alt_i(h``H``_flags_alt_i), .alt_i(h``H``_alt_i), \
+        .sib_flag_i(h``H``_alt_i ? h``H``_flags_alt_i[h``H``_slot_i ^ {{(H-1){1'b0}}, 1'b1}] \
+                                 : h``H``_flags_i[h``H``_slot_i ^ {{(H-1){1'b0}}, 1'b1}]), .slot_i(h``H``_slot_i), \
         .entering_i(h``H``_entering_i), .tag_i(h``H``_tag_i), \
         .valid_o(h``H``_valid_o), .class_o(h``H``_class_o), .border_o(h``H``_border_o), .tag_o(h``H``_tag_o));
 
