@@ -92,6 +92,8 @@
 // ev_next_slot_o: the slot of the event after the head (second_q; don't
 // care when the head is the ray's last), the head's slot after a pop. The
 // walker reads its flag banks there a clock ahead (csgrt_walker's fh_q).
+// ev_next_same_t_o: the next event's t equals the head's, ev_same_t_o after
+// a pop (the walker's probe_q).
 //
 // Latency: a leaf result accepted at edge k is in the fill bank after edge
 // k+1; a ray whose last leaf is accepted at edge k is on the drain side
@@ -154,6 +156,7 @@ module csgrt_event_sort #(
     output wire                     ev_entering_o,
     output wire                     ev_same_t_o,      // its t equals the ray's previously popped event's
     output wire [TREE_HEIGHT-1:0]   ev_next_slot_o,   // the next event's slot (the head's after a pop)
+    output wire                     ev_next_same_t_o, // the next event's t equals the head's (same_t_q after a pop)
     input  wire                     ev_pop_i
 );
 
@@ -393,6 +396,7 @@ module csgrt_event_sort #(
     wire [DW-UW-H-1:0] unused_second = {second[DW-UW-1:H+1], second[0]};
     wire next_same_t = second[DW-1 -: UW] == head[DW-1 -: UW];
     assign ev_next_slot_o = second[1 +: H];
+    assign ev_next_same_t_o = next_same_t;
     assign ev_same_t_o = same_t_q;
 
     // ---- secondary rays: info stream, t limit, inherited flags, look-behind

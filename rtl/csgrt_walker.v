@@ -123,6 +123,7 @@ module csgrt_walker #(
     input  wire                     ev_entering_i,
     input  wire                     ev_same_t_i,   // ev_t_i equals the ray's previous popped event's (csgrt_event_sort)
     input  wire [TREE_HEIGHT-1:0]   ev_next_slot_i,   // the next event's slot, the head's after a pop (csgrt_event_sort)
+    input  wire                     ev_next_same_t_i, // the next event's t equals the head's (csgrt_event_sort)
     output wire                     ev_pop_o,
     // hit records
     output wire                     valid_o,
@@ -250,7 +251,7 @@ module csgrt_walker #(
     // A probe toggles nothing and is neither hit nor miss.
     reg           gv_q;                       // the ray has issued an event
     reg  [NS-1:0] gfl_q;                      // flags before the current tie group
-    reg           pr_q;                       // the head event's probe is issued
+    reg           pr_q;                       // the head event's probe is issued (probe_q's reference)
     wire [NS-1:0] fl_cur = seq_q ? fl1_q : fl0_q;
     // the ray has its result: stop issuing. From done_q alone (registered):
     // in the clock its hit comes out of the tree one more token issues,
@@ -268,7 +269,17 @@ module csgrt_walker #(
     // the event sorter compares the head's t with the previously popped
     // event's (registered, ev_same_t_i): no comparator on the pop path
     wire          later  = ev_valid_i && gv_q && ev_same_t_i;
-    wire          probe  = later && !pr_q;
+    // probe = later && !pr_q as a register of its own, loaded with its next
+    // value: after a pop the new head is a later member when it has the
+    // popped one's t (the sorter's ev_next_same_t_i: the two registers it
+    // compares; after the ray's last event the ray ends in the same clock
+    // and nothing issues before the next load), a probe's issue clears it,
+    // and so does a load (a ray's first event is no later member). From the state bits (dne_q, gv_q, same_t_q, pr_q) it was
+    // two LUT levels at the start of the bank's write, tools/
+    // logic_depth.py's longest path. A simulation check compares the two
+    // at every issue, the only clocks it is read in.
+    reg           probe_q;
+    wire          probe  = probe_q;
     // The token is classified with gfl_q (a probe) or fl_cur. probe comes
     // late (from the sorter's head through the tie-group test), so the
     // flags are read at the event's slot first and probe chooses between
@@ -290,6 +301,16 @@ module csgrt_walker #(
     wire          load   = ce_ctl && !act_q && ray_valid_i && !in_fl_next;
     assign ev_pop_o   = issue && ev_valid_i && !probe;
     assign ray_done_o = ce_ctl && act_q && (stop || last);
+    always @(posedge clk_i)
+        if (!rst_ni)
+            probe_q <= 1'b0;
+        else if (ce) begin
+            if (load)          probe_q <= 1'b0;
+            else if (crossing) probe_q <= ev_next_same_t_i;
+            else if (issue)    probe_q <= 1'b0;
+        end
+    csgrt_check_same #(.WHAT("probe_q")) u_check_probe (
+        .clk_i, .rst_ni, .copy_i(issue && probe_q), .orig_i(issue && later && !pr_q));
 
     // fh_q and gh_q follow the bank and gfl_q at the head's slot (p = 0)
     // and its sibling (p = 1). The head moves only at a pop, which is a
