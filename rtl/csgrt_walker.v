@@ -508,7 +508,16 @@ module csgrt_walker #(
 
     // ---- output ----------------------------------------------------------------
     wire [PAYLOAD_WIDTH-1:0] t_pl = t_seq ? pl1_q : pl0_q;
-    wire [BOW-1:0] rec_base = res_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_near, t_pl}
+    // The record's fields (zero in a miss) are chosen by the token's own
+    // crossing test, not by res_hit: the two agree on every record that
+    // goes out or parks (a hit is a live crossing, a miss a live token
+    // that is none), and a record that does neither is never read. With
+    // res_hit the choice (~130 loads) hung on the live test behind the
+    // tree's output, and through it the output skid's valid and the
+    // walker's ready (tools/logic_depth.py's longest path, 13.70 ns). The
+    // look-ahead keeps res_hit: its run's records are chosen otherwise.
+    wire           rec_hit  = (LA != 0) ? res_hit : (!t_skip && border);
+    wire [BOW-1:0] rec_base = rec_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_near, t_pl}
                                       : {{(BOW-PAYLOAD_WIDTH){1'b0}}, t_pl};
     wire [OW-1:0]  rec;
     wire [OW-1:0]  rec_o;
@@ -662,7 +671,7 @@ module csgrt_walker #(
                 end
             end
             // the hit token's run (misses: 0) rides in the record
-            wire [RW-1:0] lb_run = res_hit ? tg[GW-1:BGW] : {RW{1'b0}};
+            wire [RW-1:0] lb_run = rec_hit ? tg[GW-1:BGW] : {RW{1'b0}};
             if (LA != 0) begin : g_la
                 // ---- the look-ahead run ----------------------------------------
                 // a run is open; every live token while it is belongs to
@@ -767,7 +776,7 @@ module csgrt_walker #(
                 assign w_dec    = grp_found || t_last;
                 assign w_sleaf  = grp_leaf;
                 assign la_stall = 1'b0;
-                assign w_rec = {res_hit ? fa_hit : {NS{1'b0}}, lb_run, rec_base};
+                assign w_rec = {rec_hit ? fa_hit : {NS{1'b0}}, lb_run, rec_base};
                 assign flags_after_o = rec_o[OW-1 -: NS];
                 assign q_valid_o   = 1'b0;
                 assign q_t_o       = {TW{1'b0}};
