@@ -118,7 +118,6 @@ module csgrt_class_tree #(
     // the sibling's flag comes from the caller (csgrt_walker reads it a
     // clock ahead, from registers); a simulation check compares it with
     // the read here
-    wire          sib_flag = sib_flag_i;
     csgrt_check_same #(.WHAT("sib_flag_i (the sibling slot's flag)")) u_check_sib (
         .clk_i, .rst_ni, .copy_i(valid_i && ce_i && sib_flag_i),
         .orig_i(valid_i && ce_i && (alt_i ? flags_alt_i[sib_slot] : flags_i[sib_slot])));
@@ -142,7 +141,7 @@ module csgrt_class_tree #(
             slot0_q <= slot_i;
             path0_q <= entering_i ? {2'd2, {MB{1'b0}}, slot_m} : {2'd2, slot_m, {MB{1'b0}}};
             sib0_q  <= sib_in;
-            sib_in0_q <= sib_flag;
+            sib_in0_q <= sib_flag_i;
             op1_q   <= op1_in;
         end
 

@@ -274,10 +274,11 @@ module csgrt_walker #(
     // popped one's t (the sorter's ev_next_same_t_i: the two registers it
     // compares; after the ray's last event the ray ends in the same clock
     // and nothing issues before the next load), a probe's issue clears it,
-    // and so does a load (a ray's first event is no later member). From the state bits (dne_q, gv_q, same_t_q, pr_q) it was
-    // two LUT levels at the start of the bank's write, tools/
-    // logic_depth.py's longest path. A simulation check compares the two
-    // at every issue, the only clocks it is read in.
+    // and so does a load (a ray's first event is no later member). From
+    // the state bits (dne_q, gv_q, same_t_q, pr_q) it was two LUT levels
+    // at the start of the bank's write, tools/logic_depth.py's longest
+    // path. A simulation check compares the two at every issue, the only
+    // clocks it is read in.
     reg           probe_q;
     wire          probe  = probe_q;
     // The token is classified with gfl_q (a probe) or fl_cur. probe comes
@@ -514,8 +515,9 @@ module csgrt_walker #(
     // that is none), and a record that does neither is never read. With
     // res_hit the choice (~130 loads) hung on the live test behind the
     // tree's output, and through it the output skid's valid and the
-    // walker's ready (tools/logic_depth.py's longest path, 13.70 ns). The
-    // look-ahead keeps res_hit: its run's records are chosen otherwise.
+    // walker's ready (tools/logic_depth.py's longest path, 13.70 ns; the
+    // path still runs through the parked record's choice, p_out, below).
+    // The look-ahead keeps res_hit: its run's records are chosen otherwise.
     wire           rec_hit  = (LA != 0) ? res_hit : (!t_skip && border);
     wire [BOW-1:0] rec_base = rec_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_near, t_pl}
                                       : {{(BOW-PAYLOAD_WIDTH){1'b0}}, t_pl};
