@@ -417,43 +417,53 @@ module csgrt_event_sort #(
             // cpos of the leaf in each entry's slot, accumulated over the
             // ray's leaves (acc_q: those accepted so far; one leaf per slot)
             reg  [LBK-1:0] acc_q;
-            wire [LBK-1:0] cp, uk, und;
+            wire [LBK-1:0] cp;
             for (k = 0; k < LBK; k = k + 1) begin : g_lb
                 wire hit_slot = slot_i == info_lb_slot_i[k*H +: H];
-                wire in_run   = {{(32-CB){1'b0}}, info_lb_count_i} > k;
                 assign cp[k]  = acc_q[k] || (cpos_i && hit_slot);
-                // undone: at the hit's t, or the origin is not beyond the
-                // surface (entering: Q > 0, leaving: Q <= 0)
-                assign uk[k]  = sec && in_run &&
-                                (info_lb_same_t_i[k] || (info_lb_entering_i[k] ? cp[k] : !cp[k]));
-                assign und[k] = &uk[k:0];      // and every more recent entry too
             end
 
             // The fix-up travels with the ray's last leaf through the input
-            // stage, each entry's slot as two one-hot halves (the undone
-            // bit folded into the low one): a flag then tests two register
-            // bits per entry instead of comparing the entry's 7-bit slot
-            // (512 compares at H 7, mapped per flag as the write above).
+            // stage, each entry's slot as two one-hot halves: a flag then
+            // tests two register bits per entry instead of comparing the
+            // entry's 7-bit slot (512 compares at H 7, mapped per flag as
+            // the write above). Whether an entry is undone is worked out
+            // in the stage, from the leaf's cpos accumulated into a
+            // register (s1_cp_q) and the entry's fields: computed at the
+            // input, the undone test (the leaf result's cpos, the slot
+            // compare, the chain over the entries) lay between the
+            // intersection unit's output register and the halves, the
+            // routed critical path of b54f788 (docs/fpga.md).
             reg [LBK*NLO-1:0] s1_lo_q;
             reg [LBK*NHI-1:0] s1_hi_q;
-            reg [LBK-1:0]     s1_und_q, s1_lbent_q;
+            reg [LBK-1:0]     s1_cp_q, s1_run_q, s1_same_q, s1_lbent_q;
             integer e;
             always @(posedge clk_i) begin
                 if (in_fire) acc_q <= last_i ? {LBK{1'b0}} : cp;
                 if (in_fire && last_i) begin
-                    s1_und_q   <= und;
+                    s1_cp_q    <= cp;
                     s1_lbent_q <= info_lb_entering_i;
+                    s1_same_q  <= info_lb_same_t_i;
                     for (e = 0; e < LBK; e = e + 1) begin
-                        s1_lo_q[e*NLO +: NLO] <= und[e] ? onehot_lo(info_lb_slot_i[e*H +: H]) : {NLO{1'b0}};
+                        s1_run_q[e]           <= sec && {{(32-CB){1'b0}}, info_lb_count_i} > e;
+                        s1_lo_q[e*NLO +: NLO] <= onehot_lo(info_lb_slot_i[e*H +: H]);
                         s1_hi_q[e*NHI +: NHI] <= onehot_hi(info_lb_slot_i[e*H +: H]);
                     end
                 end
                 if (!rst_ni) acc_q <= {LBK{1'b0}};
             end
+            // undone: in the run, and at the hit's t or the origin not
+            // beyond the surface (entering: Q > 0, leaving: Q <= 0) ...
+            wire [LBK-1:0] s1_uk = s1_run_q & (s1_same_q | ~(s1_lbent_q ^ s1_cp_q));
+            wire [LBK-1:0] s1_und;
+            for (k = 0; k < LBK; k = k + 1) begin : g_und
+                assign s1_und[k] = &s1_uk[k:0];   // ... and every more recent entry too
+                assign fix_lo[k*NLO +: NLO] = s1_lo_q[k*NLO +: NLO] & {NLO{s1_und[k]}};
+            end
             // (the guard on an undone entry spares Verilator the loop over
-            // the slots with every ray: a primary ray undoes nothing)
-            assign fix_en  = s1_done && s1_last_q && |s1_und_q;
-            assign fix_lo  = s1_lo_q;
+            // the slots with every ray: a primary ray undoes nothing; some
+            // entry is undone exactly when entry 0 is)
+            assign fix_en  = s1_done && s1_last_q && s1_und[0];
             assign fix_hi  = s1_hi_q;
             assign fix_ent = s1_lbent_q;
         end else begin : g_pri

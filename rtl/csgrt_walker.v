@@ -516,7 +516,7 @@ module csgrt_walker #(
     // res_hit the choice (~130 loads) hung on the live test behind the
     // tree's output, and through it the output skid's valid and the
     // walker's ready (tools/logic_depth.py's longest path, 13.70 ns; the
-    // path still runs through the parked record's choice, p_out, below).
+    // parked record's choice, below, was the next).
     // The look-ahead keeps res_hit: its run's records are chosen otherwise.
     wire           rec_hit  = (LA != 0) ? res_hit : (!t_skip && border);
     wire [BOW-1:0] rec_base = rec_hit ? {1'b1, t_t, t_leaf, t_slot, t_ent, c_from, c_to, flags_near, t_pl}
@@ -552,9 +552,18 @@ module csgrt_walker #(
     wire         w_park   = w_out && w_hit && !w_dec;
     assign res     = (w_out && !w_park) || p_out;
     assign fin_hit = (w_out && w_hit && !w_park) || p_out;
-    wire [OW-1:0] rec_out = p_out ? pend_rec_q : w_rec;
+    // Which record goes out: the parked one while a hit is pending. That
+    // is p_out's choice wherever a record goes out: without the
+    // look-ahead a pending hit stops the walk (live needs !pend_q, so
+    // w_out is 0) and p_out needs pend_q, so pend_q alone selects, a
+    // register in place of the token's live test behind the tree's
+    // output (the 136-load choice was the walker's longest path after
+    // 6e37c85, into the output skid). The look-ahead's run can end while
+    // a hit is pending, so it keeps p_out.
+    wire          rec_pend = (LA != 0) ? p_out : pend_q;
+    wire [OW-1:0] rec_out = rec_pend ? pend_rec_q : w_rec;
     wire [LB-1:0] rec_leaf = rec_out[LEAF_POS +: LB];                 // the hit leaf (miss: 0)
-    wire [LB-1:0] leaf_out = p_out ? (pend_surf ? t_leaf : rec_leaf) : (w_hit ? w_sleaf : rec_leaf);
+    wire [LB-1:0] leaf_out = rec_pend ? (pend_surf ? t_leaf : rec_leaf) : (w_hit ? w_sleaf : rec_leaf);
     assign rec = {rec_out[OW-1:LEAF_POS+LB], leaf_out, rec_out[LEAF_POS-1:0]};
     always @(posedge clk_i) begin
         if (ce) begin
@@ -579,6 +588,9 @@ module csgrt_walker #(
     // which needs !pend_q), so pend_rec_q above holds the parked one
     csgrt_check_same #(.WHAT("a park while a hit is pending (pend_rec_q)")) u_check_park (
         .clk_i, .rst_ni, .copy_i(1'b0), .orig_i(ce && w_park && pend_q));
+    // a record goes out from the park exactly when p_out says so
+    csgrt_check_same #(.WHAT("the parked record's choice (rec_pend against p_out)")) u_check_rec_pend (
+        .clk_i, .rst_ni, .copy_i(1'b0), .orig_i(ce && res && (rec_pend != p_out)));
     csgrt_skid #(.WIDTH(OW)) u_out (
         .clk_i(clk_i), .rst_ni(rst_ni),
         .valid_i(res), .ready_o(sk_ready), .ready_next_o(sk_ready_next), .data_i(rec),
