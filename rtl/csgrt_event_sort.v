@@ -71,8 +71,9 @@
 //   info_lb_entering_i, hit, entry k at [k*TREE_HEIGHT +: TREE_HEIGHT] and
 //   info_lb_same_t_i  bit k; count 0..LOOK_BEHIND, entries past it ignored).
 // cpos_i (per leaf result): c > 0, the leaf's quadric is positive at the
-// ray's origin (csgrt_isect's c_o > 0). With the ray's last leaf the
-// origin flags get the look-behind fix-up: entry k is undone iff k < count,
+// ray's origin (csgrt_isect's c_o > 0). Once the ray's last leaf is in, the
+// origin flags get the look-behind fix-up (as they pass to the drain
+// bank): entry k is undone iff k < count,
 // entries 0 .. k-1 are undone, and same_t[k] or the origin does not lie
 // beyond its surface, beyond[k] = entering[k] ? !cpos : cpos of the leaf
 // result in slot lb_slot[k] (0 if the ray has none); undoing sets
@@ -254,7 +255,7 @@ module csgrt_event_sort #(
     wire s1_done  = s1_adv && !s1_split;                   // the leaf leaves the stage
     wire in_ready = !s1_valid_q || ((!full_q || !busy_q) && !s1_split);
     wire flag_in;                          // the slot's origin flag
-    // look-behind fix-up (SECONDARY), applied with a ray's last leaf: entry
+    // look-behind fix-up (SECONDARY), applied with the ray's handover: entry
     // e sets the flag of its slot to !fix_ent[e] iff fix_lo's and fix_hi's
     // one-hot halves of entry e both select the slot (see g_sec)
     wire                      fix_en;
@@ -458,14 +459,52 @@ module csgrt_event_sort #(
             wire [LBK-1:0] s1_und;
             for (k = 0; k < LBK; k = k + 1) begin : g_und
                 assign s1_und[k] = &s1_uk[k:0];   // ... and every more recent entry too
-                assign fix_lo[k*NLO +: NLO] = s1_lo_q[k*NLO +: NLO] & {NLO{s1_und[k]}};
             end
+            // The fix-up is applied to the ray's flags as they pass to the
+            // drain bank (its handover), not to the fill bank with the last
+            // leaf: the stage's undone test then ends in registers (s2_*,
+            // the undone bit folded into the low half), and the flags'
+            // write tests two register bits per entry. With the test in
+            // front of the fill bank's write, the entries' fields through
+            // the test and the older-wins choice to every flag were the
+            // sorter's longest path (tools/logic_depth.py 13.60 ns). The
+            // handover comes at the earliest the clock after the last
+            // leaf leaves the stage, and the next ray's last leaf leaves
+            // it at the earliest in that same clock (the fill bank is
+            // full until then), so s2_* hold the ray's fix-up until its
+            // handover reads them (u_check_fix).
+            reg [LBK*NLO-1:0] s2_lo_q;
+            reg [LBK*NHI-1:0] s2_hi_q;
+            reg [LBK-1:0]     s2_ent_q;
+            reg               s2_any_q;       // some entry is undone (entry 0 is)
+            integer           e2;
+            always @(posedge clk_i) begin
+                if (s1_done && s1_last_q) begin
+                    for (e2 = 0; e2 < LBK; e2 = e2 + 1)
+                        s2_lo_q[e2*NLO +: NLO] <= s1_lo_q[e2*NLO +: NLO] & {NLO{s1_und[e2]}};
+                    s2_hi_q  <= s1_hi_q;
+                    s2_ent_q <= s1_lbent_q;
+                    s2_any_q <= s1_und[0];
+                end
+                if (!rst_ni) s2_any_q <= 1'b0;
+            end
+`ifndef SYNTHESIS
+            // a ray's fix-up waits in s2_* from its last leaf to its
+            // handover; the next ray's last leaf comes no earlier than that
+            reg s2_wait_q = 1'b0;
+            always @(posedge clk_i)
+                if (!rst_ni) s2_wait_q <= 1'b0;
+                else if (s1_done && s1_last_q) s2_wait_q <= 1'b1;
+                else if (handover) s2_wait_q <= 1'b0;
+            csgrt_check_same #(.WHAT("the look-behind fix-up held to the handover (s2_*)")) u_check_fix (
+                .clk_i, .rst_ni, .copy_i(1'b0), .orig_i(s1_done && s1_last_q && s2_wait_q && !handover));
+`endif
             // (the guard on an undone entry spares Verilator the loop over
-            // the slots with every ray: a primary ray undoes nothing; some
-            // entry is undone exactly when entry 0 is)
-            assign fix_en  = s1_done && s1_last_q && s1_und[0];
-            assign fix_hi  = s1_hi_q;
-            assign fix_ent = s1_lbent_q;
+            // the slots with every ray: a primary ray undoes nothing)
+            assign fix_en  = handover && s2_any_q;
+            assign fix_lo  = s2_lo_q;
+            assign fix_hi  = s2_hi_q;
+            assign fix_ent = s2_ent_q;
         end else begin : g_pri
             assign ready_o      = in_ready;
             assign info_ready_o = 1'b0;
@@ -514,13 +553,6 @@ module csgrt_event_sort #(
             fflags_q <= (base_flags & ~s1_sel) | (s1_sel & {NS{s1_flag_q}});
             if (s1_last_q) fpay_q <= s1_pay_q;
         end
-        // the look-behind fix-up with a secondary ray's last leaf (fix_en is
-        // constant zero when SECONDARY = 0): entry e undoes the crossing in
-        // its slot; a later e is an older entry, and the older one wins
-        if (fix_en)
-            for (fs = 0; fs < NS; fs = fs + 1)
-                for (fe = 0; fe < LOOK_BEHIND; fe = fe + 1)
-                    if (fix_lo[fe*NLO + fs % NLO] && fix_hi[fe*NHI + fs / NLO]) fflags_q[fs] <= !fix_ent[fe];
         // drain bank
         if (handover) begin
             dcnt_q   <= fcnt_q;
@@ -533,6 +565,14 @@ module csgrt_event_sort #(
             dlast_q  <= dcnt_q == {{(NB-2){1'b0}}, 2'd2};
             same_t_q <= next_same_t;
         end
+        // the look-behind fix-up of a secondary ray, with its handover
+        // (fix_en is constant zero when SECONDARY = 0): entry e undoes the
+        // crossing in its slot; a later e is an older entry, and the older
+        // one wins
+        if (fix_en)
+            for (fs = 0; fs < NS; fs = fs + 1)
+                for (fe = 0; fe < LOOK_BEHIND; fe = fe + 1)
+                    if (fix_lo[fe*NLO + fs % NLO] && fix_hi[fe*NHI + fs / NLO]) dflags_q[fs] <= !fix_ent[fe];
         // dne_q follows busy_q and dcnt_q: set by a handover with events,
         // cleared by the ray's release or by popping its last event
         if (handover)        dne_q <= occ_q[0];   // fcnt_q != 0
