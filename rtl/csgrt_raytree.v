@@ -688,6 +688,16 @@ module csgrt_raytree #(
                                                            seq_q[e_h_ctx][OBW-1:0], y_q[e_h_ctx], x_q[e_h_ctx]}
                                                         : {(39 + 1 + OBW + 24){1'b0}}));
 `endif
+    // The output buffer's write: a colour ray that ends its pixel, from a
+    // contribution (ev_ct) or a miss (ev_hp), its sum and pixel at its
+    // slot. Written as one port, its address and data chosen by ev_ct
+    // alone, a register: as two writes under the events' priority, yosys
+    // merged them with the miss's whole condition (ev_hp, the kind, the
+    // stack test) as the address select, four LUT levels from ev_ct into
+    // the distributed RAM's write address (tools/logic_depth.py's longest
+    // path, 13.62 ns).
+    wire           ob_we   = ev_ct ? !ctp_more_q : (ev_hp && !e_h_shadow && !e_h_colour_hit && !hpp_more_q);
+    wire [OBW-1:0] ob_slot = ev_ct ? ctp_slot_q : hpp_slot_q;
     // E1's pushes: the records were loaded at the end of E0 (rq_*, spq_data)
     assign rq_push  = (ev_ch && e_ch_kind == K_SHADOW && e_ch_lit) || (ev_hp && e_h_shadow && !e_sh_ends)
                       || ev_pop || ev_cam;
@@ -777,10 +787,7 @@ module csgrt_raytree #(
             if (ev_ct) begin
                 // ---- a shaded colour ray's contribution; the ray is done
                 if (ctp_more_q) pop_q[ctp_ctx_q] <= 1'b1;
-                else begin
-                    busy_q[ctp_ctx_q]      <= 1'b0;
-                    ob_valid_q[ctp_slot_q] <= 1'b1;
-                end
+                else            busy_q[ctp_ctx_q] <= 1'b0;   // its output buffer slot: ob_we
             end else if (ev_ch) begin
                 // ---- a child of a hit
                 if (e_ch_last) begin
@@ -793,10 +800,7 @@ module csgrt_raytree #(
                     // ---- a colour ray came back
                     if (!e_h_colour_hit) begin
                         if (hpp_more_q) pop_q[e_h_ctx] <= 1'b1;
-                        else begin
-                            busy_q[e_h_ctx] <= 1'b0;
-                            ob_valid_q[hpp_slot_q] <= 1'b1;
-                        end
+                        else            busy_q[e_h_ctx] <= 1'b0;   // its output buffer slot: ob_we
                     end else begin
                         // (the hit itself is written already: hit_write)
                         if (e_want_spawn) spawning_q[e_h_ctx] <= 1'b1;   // requested: spq_push
@@ -814,26 +818,23 @@ module csgrt_raytree #(
                 // ---- a new pixel (its primary ray pushed: rq_push)
                 busy_q[e_free_ctx] <= 1'b1;
             end
-            // output buffer retire
+            // output buffer: a pixel done, a pixel retired
+            if (ob_we)    ob_valid_q[ob_slot] <= 1'b1;
             if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
         end
     end
     always @(posedge clk_i) begin
         if (pa_load)  pop_ctx_q <= pop_ctx;
         if (sh_issue) sh_ctx_q  <= shq_ctx;
+        if (ob_we) begin
+            ob_acc_q[ob_slot] <= ev_ct ? ctp_sum_q : hpp_sum_q;
+            ob_xy_q[ob_slot]  <= ev_ct ? ctp_xy_q : hpp_xy_q;
+        end
         if (ev_ct) begin
             acc_q[ctp_ctx_q] <= ctp_sum_q;
-            if (!ctp_more_q) begin
-                ob_acc_q[ctp_slot_q] <= ctp_sum_q;
-                ob_xy_q[ctp_slot_q]  <= ctp_xy_q;
-            end
         end else if (ev_hp && !e_h_shadow && !e_h_colour_hit) begin
             // a colour ray's miss
             acc_q[e_h_ctx] <= hpp_sum_q;
-            if (!hpp_more_q) begin
-                ob_acc_q[hpp_slot_q] <= hpp_sum_q;
-                ob_xy_q[hpp_slot_q]  <= hpp_xy_q;
-            end
         end else if (ev_cam) begin
             x_q[e_free_ctx]   <= e_cam_xy[11:0];
             y_q[e_free_ctx]   <= e_cam_xy[23:12];
