@@ -591,9 +591,31 @@ module csgrt_walker #(
     // a record goes out from the park exactly when p_out says so
     csgrt_check_same #(.WHAT("the parked record's choice (rec_pend against p_out)")) u_check_rec_pend (
         .clk_i, .rst_ni, .copy_i(1'b0), .orig_i(ce && res && (rec_pend != p_out)));
+    // Without the look-ahead, whether a record goes out in one expression
+    // with the pending hit as the last select. From the definitions above
+    // (the walk's tokens are live only without a pending hit):
+    //   w_out && !w_park = live && (X && grp_found || t_last),
+    //   X && grp_found   = X && (!t_later || gf_found_q || pb_surf_q),
+    //   p_out            = obs && (pb_surf_q || !t_later || t_last),
+    // with X = !t_skip && border, the token's crossing test. Written
+    // through res, the skid's valid hung on `live` (130 loads) and then
+    // three more LUT levels, and on through the skid's next ready into
+    // ctl_ready_q (tools/logic_depth.py 13.42 ns, the walker's longest).
+    wire res_skid;
+    generate
+        if (LA != 0) begin : g_res_la
+            assign res_skid = res;
+        end else begin : g_res_walk
+            assign res_skid = live_tok && !t_probe &&
+                              (t_last || (pend_q ? (pb_surf_q || !t_later)
+                                                 : (!t_skip && border && (!t_later || gf_found_q || pb_surf_q))));
+        end
+    endgenerate
+    csgrt_check_same #(.WHAT("the record's valid in one expression (res_skid against res)")) u_check_res (
+        .clk_i, .rst_ni, .copy_i(res_skid), .orig_i(res));
     csgrt_skid #(.WIDTH(OW)) u_out (
         .clk_i(clk_i), .rst_ni(rst_ni),
-        .valid_i(res), .ready_o(sk_ready), .ready_next_o(sk_ready_next), .data_i(rec),
+        .valid_i(res_skid), .ready_o(sk_ready), .ready_next_o(sk_ready_next), .data_i(rec),
         .valid_o(valid_o), .ready_i(ready_i), .data_o(rec_o));
     assign {hit_o, t_o, leaf_o, slot_o, entering_o, from_o, to_o, flags_before_o, payload_o} = rec_o[BOW-1:0];
 
