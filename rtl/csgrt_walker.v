@@ -578,6 +578,11 @@ module csgrt_walker #(
             // its enable was the walker's longest path out of context.)
             if (!pend_q) pend_rec_q <= w_rec;
         end
+    end
+    // (* keep *), as on its copy pend_res_q below: yosys merges two
+    // flip-flops of the same input into one (opt_merge), and with the
+    // keep on the copy alone the copy took pend_q's loads as well
+    (* keep *) always @(posedge clk_i) begin
         if (!rst_ni) pend_q <= 1'b0;
         else if (ce) begin
             if (w_park) pend_q <= 1'b1;
@@ -601,14 +606,29 @@ module csgrt_walker #(
     // through res, the skid's valid hung on `live` (130 loads) and then
     // three more LUT levels, and on through the skid's next ready into
     // ctl_ready_q (tools/logic_depth.py 13.42 ns, the walker's longest).
+    // It reads pend_q through a copy of its own (pend_res_q): with pend_q
+    // itself, abc shared the expression's first level with `live` again
+    // (a LUT of 134 loads) and the path stayed as long.
     wire res_skid;
     generate
         if (LA != 0) begin : g_res_la
             assign res_skid = res;
         end else begin : g_res_walk
+            reg pend_res_q;
+            // (* keep *): the copy has pend_q's input, and yosys would
+            // merge the two flip-flops again (opt_merge)
+            (* keep *) always @(posedge clk_i) begin
+                if (!rst_ni) pend_res_q <= 1'b0;
+                else if (ce) begin
+                    if (w_park) pend_res_q <= 1'b1;
+                    else if (p_out) pend_res_q <= 1'b0;
+                end
+            end
+            csgrt_check_same #(.WHAT("pend_res_q (pend_q's copy)")) u_check_pend_res (
+                .clk_i, .rst_ni, .copy_i(pend_res_q), .orig_i(pend_q));
             assign res_skid = live_tok && !t_probe &&
-                              (t_last || (pend_q ? (pb_surf_q || !t_later)
-                                                 : (!t_skip && border && (!t_later || gf_found_q || pb_surf_q))));
+                              (t_last || (pend_res_q ? (pb_surf_q || !t_later)
+                                                     : (!t_skip && border && (!t_later || gf_found_q || pb_surf_q))));
         end
     endgenerate
     csgrt_check_same #(.WHAT("the record's valid in one expression (res_skid against res)")) u_check_res (
