@@ -526,6 +526,39 @@ module csgrt_top #(
                 .valid_i (cam_valid), .ready_o (cam_ready), .data_i ({cam_x, cam_y, cam_o, cam_d}),
                 .valid_o (cs_valid), .ready_i (cs_ready), .data_o ({cs_x, cs_y, cs_o, cs_d}));
 
+            // The hit record reaches the ray tree through a register slice
+            // (csgrt_hold) with the shading lookup's reads: the material
+            // comes from a block RAM whose output is not registered (5.6 ns
+            // from clock to data on the ECP5), and went on through a LUT
+            // and across the die into the hit preparation's record FIFO,
+            // another block RAM: the routed critical path of 26aefb0's
+            // BITS 16 H 5 effects build (docs/fpga.md, item 13). The
+            // lookup's ready is then the slice's full bit. One clock more
+            // per hit record, and a record every 2 clocks at most: each is
+            // a whole ray's walk.
+            localparam TRW = REC_W + 6 * BITS + 1 + (BITS - 1) + 8 + 10 * BITS + MAT_W + 2
+                           + 2 * SLOTS + RUN_W + 32;
+            wire                   tr_valid, tr_ready;
+            wire [REC_W-1:0]       tr_rec;
+            wire [3*BITS-1:0]      tr_o, tr_d;
+            wire                   tr_hit;
+            wire [BITS-2:0]        tr_t;
+            wire [7:0]             tr_to;
+            wire [10*BITS-1:0]     tr_coef;
+            wire [MAT_W-1:0]       tr_mat;
+            wire [1:0]             tr_mat_want;
+            wire [SLOTS-1:0]       tr_near, tr_after;
+            wire [RUN_W-1:0]       tr_run;
+            wire [15:0]            tr_ior_from, tr_ior_to;
+            csgrt_hold #(.WIDTH(TRW)) u_hit_hold (
+                .clk_i, .rst_ni,
+                .valid_i (l_valid_q), .ready_o (l_ready),
+                .data_i ({l_ray_q[RAY_W-1 -: REC_W], l_ray_q[6*BITS-1:0], l_hit_q, l_t_q, l_to_q, leaf_b_coef,
+                          mat, mat_want, l_near_q, l_after_q, l_run_q, ior_a, ior_b}),
+                .valid_o (tr_valid), .ready_i (tr_ready),
+                .data_o ({tr_rec, tr_o, tr_d, tr_hit, tr_t, tr_to, tr_coef,
+                          tr_mat, tr_mat_want, tr_near, tr_after, tr_run, tr_ior_from, tr_ior_to}));
+
             csgrt_raytree #(
                 .BITS(BITS), .TREE_HEIGHT(TREE_HEIGHT), .MAX_LIGHTS(MAX_LIGHTS), .CONTEXTS(CONTEXTS),
                 .MAX_DEPTH(MAX_DEPTH), .LOOK_BEHIND(LOOK_BEHIND), .SHADOWS(SHADOWS), .REFLECTION(REFLECTION),
@@ -540,11 +573,11 @@ module csgrt_top #(
                 .cam_o_i (cs_o), .cam_d_i (cs_d),
                 .ray_valid_o (d_valid), .ray_ready_i (d_ready), .ray_rec_o (rt_rec), .ray_o_o (rt_o),
                 .ray_d_o (rt_d), .ray_info_o (rt_info),
-                .tr_valid_i (l_valid_q), .tr_ready_o (l_ready), .tr_rec_i (l_ray_q[RAY_W-1 -: REC_W]),
-                .tr_o_i (l_ray_q[6*BITS-1:3*BITS]), .tr_d_i (l_ray_q[3*BITS-1:0]),
-                .tr_hit_i (l_hit_q), .tr_t_i (l_t_q), .tr_to_i (l_to_q), .tr_coef_i (leaf_b_coef),
-                .tr_mat_i (mat), .tr_mat_want_i (mat_want), .tr_flags_near_i (l_near_q), .tr_run_i (l_run_q), .tr_flags_after_i (l_after_q),
-                .tr_ior_from_i (ior_a), .tr_ior_to_i (ior_b),
+                .tr_valid_i (tr_valid), .tr_ready_o (tr_ready), .tr_rec_i (tr_rec),
+                .tr_o_i (tr_o), .tr_d_i (tr_d),
+                .tr_hit_i (tr_hit), .tr_t_i (tr_t), .tr_to_i (tr_to), .tr_coef_i (tr_coef),
+                .tr_mat_i (tr_mat), .tr_mat_want_i (tr_mat_want), .tr_flags_near_i (tr_near), .tr_run_i (tr_run),
+                .tr_flags_after_i (tr_after), .tr_ior_from_i (tr_ior_from), .tr_ior_to_i (tr_ior_to),
                 .sp_valid_o (sp_valid), .sp_ready_i (sp_ready), .sp_o_o (sp_o), .sp_d_o (sp_d), .sp_t_o (sp_t),
                 .sp_coef_o (sp_coef), .sp_lights_o (sp_lights), .sp_reflect_o (sp_reflect), .sp_user_o (sp_user),
                 .sp_refract_o (sp_refract), .sp_ior_from_o (sp_ior_from), .sp_ior_to_o (sp_ior_to),
