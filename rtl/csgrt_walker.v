@@ -582,12 +582,12 @@ module csgrt_walker #(
     // (* keep *), as on its copy pend_res_q below: yosys merges two
     // flip-flops of the same input into one (opt_merge), and with the
     // keep on the copy alone the copy took pend_q's loads as well
+    // pend_q's next value while the walker runs (a park sets it, the
+    // parked record's leaving clears it); pend_res_q below loads it too
+    wire pend_d = w_park || (pend_q && !p_out);
     (* keep *) always @(posedge clk_i) begin
         if (!rst_ni) pend_q <= 1'b0;
-        else if (ce) begin
-            if (w_park) pend_q <= 1'b1;
-            else if (p_out) pend_q <= 1'b0;
-        end
+        else if (ce) pend_q <= pend_d;
     end
     // a hit parks only without one pending (the walk's records need live,
     // which needs !pend_q), so pend_rec_q above holds the parked one
@@ -619,10 +619,7 @@ module csgrt_walker #(
             // merge the two flip-flops again (opt_merge)
             (* keep *) always @(posedge clk_i) begin
                 if (!rst_ni) pend_res_q <= 1'b0;
-                else if (ce) begin
-                    if (w_park) pend_res_q <= 1'b1;
-                    else if (p_out) pend_res_q <= 1'b0;
-                end
+                else if (ce) pend_res_q <= pend_d;
             end
             csgrt_check_same #(.WHAT("pend_res_q (pend_q's copy)")) u_check_pend_res (
                 .clk_i, .rst_ni, .copy_i(pend_res_q), .orig_i(pend_q));
