@@ -192,8 +192,15 @@ module csgrt_event_sort #(
     wire ev0 = count_i != 2'd0;
     wire ev1 = count_i == 2'd2;
     wire keep0, keep1;                     // within the t limit (secondary rays)
-    wire ahead0  = ev0 && range0_i == R_FINITE && !t0_i[TW-1] && keep0;
-    wire ahead1  = ev1 && range1_i == R_FINITE && !t1_i[TW-1] && keep1;
+    // ahead of the origin (Finite, t >= 0), the t limit aside: the pair is
+    // ordered among these, and the limit only counts how many of a, b go
+    // in (s1_n_q). The limit keeps an event iff t < limit, so it keeps the
+    // smaller t whenever it keeps the larger: of the pair a < b it keeps
+    // both, a alone or neither (u_check_keep), and a, b need not wait for
+    // the limit's compare, whose limit comes through the info queue's
+    // read multiplexer (the whole design's longest path, tools/logic_depth.py)
+    wire ahead0  = ev0 && range0_i == R_FINITE && !t0_i[TW-1];
+    wire ahead1  = ev1 && range1_i == R_FINITE && !t1_i[TW-1];
     wire behind0 = ev0 && (range0_i == R_NEGINF || (range0_i == R_FINITE && t0_i[TW-1]));
     wire behind1 = ev1 && (range1_i == R_NEGINF || (range1_i == R_FINITE && t1_i[TW-1]));
     wire [DW-1:0] e0 = {t0_i[UW-1:0], tie_of(leaf_i, enter0_i, ties_regular_i), slot_i, enter0_i};
@@ -528,7 +535,7 @@ module csgrt_event_sort #(
             s1_a_q <= s1_b_q;
         end
         if (in_fire) begin
-            s1_n_q    <= {1'b0, ahead0} + {1'b0, ahead1};
+            s1_n_q    <= {1'b0, ahead0 && keep0} + {1'b0, ahead1 && keep1};
             s1_a_q    <= (swap || !ahead0) ? e1 : e0;
             s1_b_q    <= swap ? e0 : e1;
             s1_slo_q  <= onehot_lo(slot_i);
@@ -619,6 +626,12 @@ module csgrt_event_sort #(
     csgrt_check_same #(.WHAT("swap (the pair ordered by t alone)")) u_check_swap (
         .clk_i, .rst_ni, .copy_i(in_fire && swap),
         .orig_i(in_fire && ahead0 && ahead1 && (`CSGRT_KEY(e1) < `CSGRT_KEY(e0))));
+
+    // the t limit keeps a whenever it keeps b (s1_n_q counts a first)
+    wire keep_a = (swap || !ahead0) ? keep1 : keep0;
+    wire keep_b = swap ? keep0 : keep1;
+    csgrt_check_same #(.WHAT("the t limit's monotony (keeps b but not a)")) u_check_keep (
+        .clk_i, .rst_ni, .copy_i(in_fire && ahead0 && ahead1 && keep_b && !keep_a), .orig_i(1'b0));
 
     generate
         if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2 || LOOK_BEHIND < 1 || (INSERTS != 1 && INSERTS != 2)) begin : g_bad_param
