@@ -927,13 +927,28 @@ module csgrt_raytree #(
         .orig_i(lcol_we_ev ? {1'b1, ev_ch ? {e_ch_user, e_ch_light, 48'd0} : {e_h_ctx, e_h_light, e_sh_color}}
                            : {(1 + CB + KW + 48){1'b0}}));
 `endif
-    wire [OBW:0] in_flight_d = next_seq_d - retire_d;
-    always @(posedge clk_i)
-        room_out_q <= !rst_ni || (in_flight_d < OB[OBW:0]);
+    // The pixels in flight, next_seq - retire, as a register of its own
+    // (in_flight_q): after this clock they are base - out_take, base the
+    // count before the pixel out (0 at a frame's start, when the sequence
+    // restarts at the retire pointer). Both compares of room_out_q's next
+    // value are made on base, from registers, and the pixel out only
+    // chooses between them: out_take is the output buffer's valid bit at
+    // the retire pointer (an OB-way multiplexer), and with the subtraction
+    // and compare behind it that was the ray tree's longest path
+    // (tools/logic_depth.py 12.98 ns). base - 1 wraps at 0 as
+    // next_seq_d - retire_d does.
+    reg  [OBW:0] in_flight_q;
+    wire [OBW:0] in_flight_base = start_i ? {(OBW+1){1'b0}} : in_flight_q + {{OBW{1'b0}}, ev_cam};
+    wire         room_if_out    = (in_flight_base - 1'b1) < OB[OBW:0];
+    wire         room_if_none   = in_flight_base < OB[OBW:0];
+    always @(posedge clk_i) begin
+        in_flight_q <= !rst_ni ? {(OBW+1){1'b0}} : in_flight_base - {{OBW{1'b0}}, out_take};
+        room_out_q  <= !rst_ni || (out_take ? room_if_out : room_if_none);
+    end
 `ifndef SYNTHESIS
     wire [OBW:0] in_flight = next_seq_q - retire_q;
-    csgrt_check_same #(.WHAT("room_out_q")) u_check_room (
-        .clk_i, .rst_ni, .copy_i(room_out_q), .orig_i(in_flight < OB[OBW:0]));
+    csgrt_check_same #(.WIDTH(OBW + 2), .WHAT("in_flight_q / room_out_q")) u_check_room (
+        .clk_i, .rst_ni, .copy_i({in_flight_q, room_out_q}), .orig_i({in_flight, in_flight < OB[OBW:0]}));
 `endif
 
     // The pushed ray's record, loaded every clock from the source the event
