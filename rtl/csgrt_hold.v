@@ -29,18 +29,27 @@ module csgrt_hold #(
 );
     reg             full_q;
     reg [WIDTH-1:0] data_q;
+    // ready_o as a register of its own, !full_q loaded with its next value:
+    // full_q is the enable of every data bit (WIDTH loads, 697 in the hit
+    // record's slice), and the producer's handshake behind ready_o (the
+    // shading lookup's read addresses, csgrt_top) started on that net
+    // (tools/logic_depth.py 12.90 ns). keep: yosys would otherwise fold the
+    // complement back into full_q.
+    (* keep *) reg  room_q;
+    wire            full_d = rst_ni && (full_q ? !ready_i : valid_i);
 
-    assign ready_o = !full_q;
+    assign ready_o = room_q;
     assign valid_o = full_q;
     assign data_o  = data_q;
 
     always @(posedge clk_i) begin
-        if (!rst_ni)     full_q <= 1'b0;
-        else if (full_q) full_q <= !ready_i;
-        else             full_q <= valid_i;
+        full_q <= full_d;
+        room_q <= !full_d;
         // loads on every clock the slice is empty: the enable is full_q
         if (!full_q) data_q <= data_i;
     end
+    csgrt_check_same #(.WHAT("room_q")) u_check_room (
+        .clk_i, .rst_ni, .copy_i(room_q), .orig_i(!full_q));
 
     generate
         if (WIDTH < 1) begin : g_bad_width
