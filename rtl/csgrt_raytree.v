@@ -191,6 +191,10 @@ module csgrt_raytree #(
             info = {run, tl, flags, secondary};
         end
     endfunction
+    // an output buffer slot as a one-hot code
+    function [OB-1:0] slot_onehot(input [OBW-1:0] slot);
+        slot_onehot = {{(OB-1){1'b0}}, 1'b1} << slot;
+    endfunction
 
     // ---- context state ---------------------------------------------------------------
     reg [P-1:0]        busy_q, spawning_q, shade_q, pop_q;
@@ -637,6 +641,7 @@ module csgrt_raytree #(
     reg  [38:0]    ctp_sum_q;
     reg            ctp_more_q;          // its stack has a pending child
     reg  [OBW-1:0] ctp_slot_q;
+    reg  [OB-1:0]  ctp_slot_oh_q;       // ctp_slot_q one-hot (ob_set below)
     reg  [23:0]    ctp_xy_q;
     always @(posedge clk_i) begin
         if (ct_valid) begin
@@ -644,6 +649,7 @@ module csgrt_raytree #(
             ctp_sum_q  <= add_sat(acc_q[ct_ctx], ct_contrib);
             ctp_more_q <= sp_q[ct_ctx] != {SPW{1'b0}};
             ctp_slot_q <= seq_q[ct_ctx][OBW-1:0];
+            ctp_slot_oh_q <= slot_onehot(seq_q[ct_ctx][OBW-1:0]);
             ctp_xy_q   <= {y_q[ct_ctx], x_q[ct_ctx]};
         end
     end
@@ -670,11 +676,13 @@ module csgrt_raytree #(
     reg  [38:0]    hpp_sum_q;
     reg            hpp_more_q;
     reg  [OBW-1:0] hpp_slot_q;
+    reg  [OB-1:0]  hpp_slot_oh_q;
     reg  [23:0]    hpp_xy_q;
     always @(posedge clk_i) begin
         hpp_sum_q  <= add_sat(acc_q[h_ctx], hp_bg);
         hpp_more_q <= sp_q[h_ctx] != {SPW{1'b0}};
         hpp_slot_q <= seq_q[h_ctx][OBW-1:0];
+        hpp_slot_oh_q <= slot_onehot(seq_q[h_ctx][OBW-1:0]);
         hpp_xy_q   <= {y_q[h_ctx], x_q[h_ctx]};
     end
 `ifndef SYNTHESIS
@@ -696,8 +704,20 @@ module csgrt_raytree #(
     // stack test) as the address select, four LUT levels from ev_ct into
     // the distributed RAM's write address (tools/logic_depth.py's longest
     // path, 13.62 ns).
-    wire           ob_we   = ev_ct ? !ctp_more_q : (ev_hp && !e_h_shadow && !e_h_colour_hit && !hpp_more_q);
+    wire           hp_ends = ev_hp && !e_h_shadow && !e_h_colour_hit && !hpp_more_q;   // a miss ends its pixel
+    wire           ob_we   = ev_ct ? !ctp_more_q : hp_ends;
     wire [OBW-1:0] ob_slot = ev_ct ? ctp_slot_q : hpp_slot_q;
+    // The valid bits: set at the slot written, cleared at the retire
+    // pointer's slot when the pixel leaves (out_take), the clear last. Per
+    // bit, from one-hot slot codes loaded with the slots: bit k is set
+    // from its own code bit, and cleared by out_take at slot k, which is
+    // ob_valid_q[k] itself at the retire pointer (no OB-way multiplexer).
+    // Decoded from ob_slot, each bit's set waited for ev_ct's choice of
+    // slot (102 loads) and the decode (tools/logic_depth.py 13.68 ns out of
+    // context); a simulation check compares them with that decode.
+    wire [OB-1:0]  ob_set  = ev_ct ? (ctp_more_q ? {OB{1'b0}} : ctp_slot_oh_q)
+                                   : (hp_ends ? hpp_slot_oh_q : {OB{1'b0}});
+    wire [OB-1:0]  ob_clr  = (o_adv ? slot_onehot(retire_q[OBW-1:0]) : {OB{1'b0}}) & ob_valid_q;
     // E1's pushes: the records were loaded at the end of E0 (rq_*, spq_data)
     assign rq_push  = (ev_ch && e_ch_kind == K_SHADOW && e_ch_lit) || (ev_hp && e_h_shadow && !e_sh_ends)
                       || ev_pop || ev_cam;
@@ -819,8 +839,7 @@ module csgrt_raytree #(
                 busy_q[e_free_ctx] <= 1'b1;
             end
             // output buffer: a pixel done, a pixel retired
-            if (ob_we)    ob_valid_q[ob_slot] <= 1'b1;
-            if (out_take) ob_valid_q[retire_q[OBW-1:0]] <= 1'b0;
+            ob_valid_q <= (ob_valid_q | ob_set) & ~ob_clr;
         end
     end
     always @(posedge clk_i) begin
@@ -946,6 +965,17 @@ module csgrt_raytree #(
         room_out_q  <= !rst_ni || (out_take ? room_if_out : room_if_none);
     end
 `ifndef SYNTHESIS
+    // the valid bits as decoded from the write's slot and the retire pointer
+    reg [OB-1:0] ob_valid_ref_q;
+    always @(posedge clk_i) begin
+        if (!rst_ni) ob_valid_ref_q <= {OB{1'b0}};
+        else begin
+            if (ob_we)    ob_valid_ref_q[ob_slot] <= 1'b1;
+            if (out_take) ob_valid_ref_q[retire_q[OBW-1:0]] <= 1'b0;
+        end
+    end
+    csgrt_check_same #(.WIDTH(OB), .WHAT("ob_valid_q (set and cleared from one-hot codes)")) u_check_ob_valid (
+        .clk_i, .rst_ni, .copy_i(ob_valid_q), .orig_i(ob_valid_ref_q));
     wire [OBW:0] in_flight = next_seq_q - retire_q;
     csgrt_check_same #(.WIDTH(OBW + 2), .WHAT("in_flight_q / room_out_q")) u_check_room (
         .clk_i, .rst_ni, .copy_i({in_flight_q, room_out_q}), .orig_i({in_flight, in_flight < OB[OBW:0]}));
