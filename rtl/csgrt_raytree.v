@@ -125,6 +125,7 @@ module csgrt_raytree #(
     output wire [CB-1:0]             sp_user_o,
     // spawned children
     input  wire                      ch_valid_i,
+    input  wire                      ch_valid_ev_i,    // ch_valid_i from a flip-flop of its own: the event choice's
     output wire                      ch_ready_o,
     input  wire [2:0]                ch_kind_i,        // csgrt_spawn's kinds
     input  wire [KW-1:0]             ch_light_i,
@@ -467,10 +468,12 @@ module csgrt_raytree #(
     // the records loaded at the end of E0, the same clock as before.
     reg  ev_ct, ev_ch, ev_hp, ev_pop, ev_cam;
     wire ev0_ct  = ct_valid;
-    wire ev0_ch  = !ct_valid && ch_valid_i;
-    wire ev0_hp  = !ct_valid && !ch_valid_i && hp_valid;
-    wire ev0_pop = !ct_valid && !ch_valid_i && !hp_valid && pop_staged_q;
-    wire ev0_cam = !ct_valid && !ch_valid_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out_q
+    // (ch_valid_ev_i: the spawn unit's valid bit as a copy of its own;
+    // ch_valid_i selects the records below, some 1,000 bits)
+    wire ev0_ch  = !ct_valid && ch_valid_ev_i;
+    wire ev0_hp  = !ct_valid && !ch_valid_ev_i && hp_valid;
+    wire ev0_pop = !ct_valid && !ch_valid_ev_i && !hp_valid && pop_staged_q;
+    wire ev0_cam = !ct_valid && !ch_valid_ev_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out_q
                    && !start_i && !ev_cam;
     always @(posedge clk_i)
         if (!rst_ni) {ev_ct, ev_ch, ev_hp, ev_pop, ev_cam} <= 5'd0;

@@ -224,6 +224,7 @@ module csgrt_spawn #(
     input  wire [USER_WIDTH-1:0]                  s_user_i,
     // output stream: one child ray
     output wire                                   m_valid_o,
+    output wire                                   m_valid_copy_o,   // m_valid_o again, from a flip-flop of its own
     input  wire                                   m_ready_i,
     output wire                                   m_last_o,
     output wire [2:0]                             m_kind_o,
@@ -1237,6 +1238,17 @@ module csgrt_spawn #(
         .data_i({qo_user, o_lit, o_dist, o_dir, qo_inr, qo_p, o_light, o_kind, o_last}),
         .valid_o(m_valid_o), .ready_i(m_ready_i),
         .data_o({m_user_o, m_lit_o, m_dist_o, m_d_o, m_in_range_o, m_o_o, m_light_o, m_kind_o, m_last_o}));
+    // The output's valid bit again (m_valid_copy_o), loaded with the skid's
+    // next value (its skid register is full exactly while en_c is low): the
+    // ray tree decides its event from it, while m_valid_o selects its ~1,000
+    // record bits (285 loads, the first net of the whole design's longest
+    // path: tools/logic_depth.py 12.85 ns). keep: yosys would merge the two.
+    (* keep *) reg valid_copy_q;
+    always @(posedge clk_i)
+        valid_copy_q <= rst_ni && ((m_ready_i || !m_valid_o) ? (!en_c || (u2_valid && last_c)) : m_valid_o);
+    assign m_valid_copy_o = valid_copy_q;
+    csgrt_check_same #(.WHAT("m_valid_copy_o")) u_check_valid_copy (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(valid_copy_q), .orig_i(m_valid_o));
 
     generate
         if (BITS < 12 || BITS > 32 || MAX_LIGHTS < 1 || USER_WIDTH < 1) begin : g_bad_param
