@@ -547,15 +547,50 @@ module csgrt_raytree #(
     // ---- the shading issue ---------------------------------------------------------------
     reg  [CB-1:0] sh_ctx_q;
     reg           sh_valid_q;
-    reg  [CB-1:0] shq_ctx;
-    reg           shq_any;
-    always @* begin
-        shq_ctx = {CB{1'b0}};
-        shq_any = 1'b0;
-        for (k = P - 1; k >= 0; k = k - 1)
-            if (shade_q[k]) begin shq_ctx = k[CB-1:0]; shq_any = 1'b1; end
-    end
+    // The context to shade next, the lowest one waiting (shade_q), as
+    // registers of their own (shq_ctx_q, shq_any_q) loaded with the
+    // choice over shade_q's next value (shade_d): shq_ctx addresses the
+    // four block RAMs of the hit (ho_q, hd_q, hcoef_q, hmat_q), placed
+    // across the die, and as a priority encoder of shade_q in front of
+    // them it was 232f2b0's routed critical path (four LUTs, then 6.96 ns
+    // of route to hd_q's address: 88.68 MHz). A simulation stops if the
+    // registers differ from the choice over shade_q.
+    wire [P-1:0]  shade_d;
+    reg  [CB-1:0] shq_ctx_q;
+    reg           shq_any_q;
+    function [CB:0] lowest(input [P-1:0] v);   // {any, index of the lowest set bit}
+        integer j;
+        begin
+            lowest = {(CB+1){1'b0}};
+            for (j = P - 1; j >= 0; j = j - 1)
+                if (v[j]) lowest = {1'b1, j[CB-1:0]};
+        end
+    endfunction
+    always @(posedge clk_i)
+        if (!rst_ni) {shq_any_q, shq_ctx_q} <= {(CB+1){1'b0}};
+        else         {shq_any_q, shq_ctx_q} <= lowest(shade_d);
+    wire [CB-1:0] shq_ctx = shq_ctx_q;
+    wire          shq_any = shq_any_q;
+    csgrt_check_same #(.WIDTH(CB + 1), .WHAT("shq_any_q / shq_ctx_q (the context to shade next)")) u_check_shq (
+        .clk_i, .rst_ni, .copy_i({shq_any_q, shq_any_q ? shq_ctx_q : {CB{1'b0}}}),
+        .orig_i(shade_q != {P{1'b0}} ? lowest(shade_q) : {(CB+1){1'b0}}));
     wire sh_issue = shq_any && (!sh_valid_q || sh_ready_i);
+    // shade_q's next value: the issued context cleared, then a context set
+    // that is ready for shading (its children all spawned and its shadow
+    // rays all back), in the events' order of priority:
+    //  - a child of a hit, the last: unless shadow rays are pending or
+    //    this child is a lit shadow ray (it is pushed: pend_q counts it);
+    //  - a colour ray's hit that wants no children;
+    //  - a shadow ray that ends, the context's last pending, its
+    //    children all spawned.
+    wire shade_ch = ev_ch && e_ch_last && pend_q[e_ch_user] == {PW{1'b0}} && !(e_ch_kind == K_SHADOW && e_ch_lit);
+    wire shade_hc = !ev_ch && ev_hp && !e_h_shadow && e_h_colour_hit && !e_want_spawn;
+    wire shade_sh = !ev_ch && ev_hp && e_h_shadow && e_sh_ends && pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1}
+                    && !spawning_q[e_h_ctx];
+    wire [P-1:0] shade_set = ev_ct ? {P{1'b0}}
+                           : shade_ch ? {{(P-1){1'b0}}, 1'b1} << e_ch_user
+                           : (shade_hc || shade_sh) ? {{(P-1){1'b0}}, 1'b1} << e_h_ctx : {P{1'b0}};
+    assign shade_d = (shade_q & ~(sh_issue ? {{(P-1){1'b0}}, 1'b1} << shq_ctx : {P{1'b0}})) | shade_set;
     assign sh_valid_o = sh_valid_q;
     assign sh_tag_o   = {{(12-CB){1'b0}}, sh_ctx_q};
     // the block RAMs' read registers: loaded at the issue, held until taken
@@ -802,10 +837,8 @@ module csgrt_raytree #(
             next_seq_q <= next_seq_d;
             // shading issue
             if (sh_ready_i && sh_valid_q) sh_valid_q <= 1'b0;
-            if (sh_issue) begin
-                sh_valid_q       <= 1'b1;
-                shade_q[shq_ctx] <= 1'b0;
-            end
+            if (sh_issue) sh_valid_q <= 1'b1;
+            shade_q <= shade_d;
 
             if (ev_ct) begin
                 // ---- a shaded colour ray's contribution; the ray is done
@@ -815,8 +848,7 @@ module csgrt_raytree #(
                 // ---- a child of a hit
                 if (e_ch_last) begin
                     spawning_q[e_ch_user] <= 1'b0;
-                    if (pend_q[e_ch_user] == {PW{1'b0}} && !(e_ch_kind == K_SHADOW && e_ch_lit))
-                        shade_q[e_ch_user] <= 1'b1;
+                    // (shade_q: shade_set below)
                 end
             end else if (ev_hp) begin
                 if (!e_h_shadow) begin
@@ -827,12 +859,11 @@ module csgrt_raytree #(
                     end else begin
                         // (the hit itself is written already: hit_write)
                         if (e_want_spawn) spawning_q[e_h_ctx] <= 1'b1;   // requested: spq_push
-                        else              shade_q[e_h_ctx]    <= 1'b1;
+                        // (else shade_q: shade_set below)
                     end
                 end else begin
-                    // ---- a shadow ray came back (or goes on: rq_push)
-                    if (e_sh_ends && pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[e_h_ctx])
-                        shade_q[e_h_ctx] <= 1'b1;
+                    // ---- a shadow ray came back (or goes on: rq_push;
+                    // its last one sets shade_q: shade_set below)
                 end
             end else if (ev_pop) begin
                 // ---- the next colour ray of a context, from its stack (pushed: rq_push)
