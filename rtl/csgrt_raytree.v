@@ -192,9 +192,12 @@ module csgrt_raytree #(
             info = {run, tl, flags, secondary};
         end
     endfunction
-    // an output buffer slot as a one-hot code
+    // an output buffer slot, a context, as one-hot codes
     function [OB-1:0] slot_onehot(input [OBW-1:0] slot);
         slot_onehot = {{(OB-1){1'b0}}, 1'b1} << slot;
+    endfunction
+    function [P-1:0] ctx_onehot(input [CB-1:0] ctx);
+        ctx_onehot = {{(P-1){1'b0}}, 1'b1} << ctx;
     endfunction
 
     // ---- context state ---------------------------------------------------------------
@@ -572,8 +575,7 @@ module csgrt_raytree #(
     wire [CB-1:0] shq_ctx = shq_ctx_q;
     wire          shq_any = shq_any_q;
     csgrt_check_same #(.WIDTH(CB + 1), .WHAT("shq_any_q / shq_ctx_q (the context to shade next)")) u_check_shq (
-        .clk_i, .rst_ni, .copy_i({shq_any_q, shq_any_q ? shq_ctx_q : {CB{1'b0}}}),
-        .orig_i(shade_q != {P{1'b0}} ? lowest(shade_q) : {(CB+1){1'b0}}));
+        .clk_i, .rst_ni, .copy_i({shq_any_q, shq_ctx_q}), .orig_i(lowest(shade_q)));
     wire sh_issue = shq_any && (!sh_valid_q || sh_ready_i);
     // shade_q's next value: the issued context cleared, then a context set
     // that is ready for shading (its children all spawned and its shadow
@@ -588,9 +590,9 @@ module csgrt_raytree #(
     wire shade_sh = !ev_ch && ev_hp && e_h_shadow && e_sh_ends && pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1}
                     && !spawning_q[e_h_ctx];
     wire [P-1:0] shade_set = ev_ct ? {P{1'b0}}
-                           : shade_ch ? {{(P-1){1'b0}}, 1'b1} << e_ch_user
-                           : (shade_hc || shade_sh) ? {{(P-1){1'b0}}, 1'b1} << e_h_ctx : {P{1'b0}};
-    assign shade_d = (shade_q & ~(sh_issue ? {{(P-1){1'b0}}, 1'b1} << shq_ctx : {P{1'b0}})) | shade_set;
+                           : shade_ch ? ctx_onehot(e_ch_user)
+                           : (shade_hc || shade_sh) ? ctx_onehot(e_h_ctx) : {P{1'b0}};
+    assign shade_d = (shade_q & ~(sh_issue ? ctx_onehot(shq_ctx) : {P{1'b0}})) | shade_set;
     assign sh_valid_o = sh_valid_q;
     assign sh_tag_o   = {{(12-CB){1'b0}}, sh_ctx_q};
     // the block RAMs' read registers: loaded at the issue, held until taken
