@@ -670,7 +670,6 @@ module csgrt_walker #(
             // in the clock to enable LBK * (H + 1 + TW) flip-flops (the
             // walker's critical path out of context). The history as seen
             // (eff_*) puts the pending entry in front.
-            reg [CB-1:0]     hc_q;             // entries held, 0 .. LBK
             reg [LBK*H-1:0]  hs_q;
             reg [LBK-1:0]    he_q;
             reg [LBK*TW-1:0] ht_q;
@@ -681,7 +680,42 @@ module csgrt_walker #(
             wire [LBK*H-1:0]  eff_s;
             wire [LBK-1:0]    eff_e;
             wire [LBK*TW-1:0] eff_t;
-            wire [CB-1:0]     eff_c = (pv_q && {{(32-CB){1'b0}}, hc_q} != LBK) ? hc_q + 1'b1 : hc_q;
+            // The count as seen (pending entry included) and its thermometer
+            // code (held_q[g]: entry g holds a token) are registers of their
+            // own, loaded a clock ahead of the history, on the crossing
+            // (issue && toggle, pv_q's next value) itself: as the pending
+            // count plus pv_q, compared per entry, they were the first three
+            // LUT levels of the walker's longest path (pv_q -> the run ->
+            // the tree's tag register, tools/logic_depth.py 12.35 ns). A
+            // crossing on the clock of a load is discarded, as pv_q's is.
+            reg [CB-1:0]      ec_q;            // entries held, 0 .. LBK
+            reg [LBK-1:0]     held_q;
+            wire [CB-1:0]     eff_c = ec_q;
+            always @(posedge clk_i) begin
+                if (!rst_ni || (ce && load)) begin
+                    ec_q   <= {CB{1'b0}};
+                    held_q <= {LBK{1'b0}};
+                end else if (ce && issue && toggle) begin
+                    if ({{(32-CB){1'b0}}, ec_q} != LBK) ec_q <= ec_q + 1'b1;
+                    held_q <= ~(~held_q << 1);   // one more entry held
+                end
+            end
+`ifndef SYNTHESIS
+            // the count as it was kept before: the history's count (hc_q)
+            // plus the pending entry; the registers above must equal it
+            reg [CB-1:0] hc_q;
+            always @(posedge clk_i) begin
+                if (ce && pv_q) hc_q <= eff_c;
+                if ((ce && load) || !rst_ni) hc_q <= {CB{1'b0}};
+            end
+            wire [CB-1:0] hc_eff = (pv_q && {{(32-CB){1'b0}}, hc_q} != LBK) ? hc_q + 1'b1 : hc_q;
+            wire [LBK-1:0] held_ref;
+            for (g = 0; g < LBK; g = g + 1) begin : g_held_ref
+                assign held_ref[g] = {{(32-CB){1'b0}}, hc_eff} > g;
+            end
+            csgrt_check_same #(.WIDTH(CB + LBK), .WHAT("the look-behind count and its thermometer code (ec_q, held_q)")) u_check_count (
+                .clk_i, .rst_ni, .copy_i({ec_q, held_q}), .orig_i({hc_eff, held_ref}));
+`endif
             if (LBK == 1) begin : g_eff_one
                 assign eff_s = pv_q ? ps_q : hs_q;
                 assign eff_e = pv_q ? pe_q : he_q;
@@ -694,11 +728,20 @@ module csgrt_walker #(
             // the run of the token being issued: the history, same_t against its t
             wire [LBK*H-1:0] run_slot;
             wire [LBK-1:0]   run_ent, run_same;
+            // same_t of the pending entry (same_at[0]) and of history entry
+            // g (same_at[g + 1]): entry g as seen is history entry g, or the
+            // one before it behind a pending entry, so pv_q chooses between
+            // two compares of registers with ev_t_i after them, instead of
+            // choosing each compare's TW-bit operand first
+            wire [LBK:0] same_at;
+            assign same_at[0] = pt_q == ev_t_i;
+            for (g = 0; g < LBK; g = g + 1) begin : g_same
+                assign same_at[g + 1] = ht_q[g*TW +: TW] == ev_t_i;
+            end
             for (g = 0; g < LBK; g = g + 1) begin : g_run
-                wire held = {{(32-CB){1'b0}}, eff_c} > g;
-                assign run_slot[g*H +: H] = held ? eff_s[g*H +: H] : {H{1'b0}};
-                assign run_ent[g]         = held && eff_e[g];
-                assign run_same[g]        = held && eff_t[g*TW +: TW] == ev_t_i;
+                assign run_slot[g*H +: H] = held_q[g] ? eff_s[g*H +: H] : {H{1'b0}};
+                assign run_ent[g]         = held_q[g] && eff_e[g];
+                assign run_same[g]        = held_q[g] && (pv_q ? same_at[g] : same_at[g + 1]);
             end
             wire [RW-1:0] run_now = {eff_c, run_slot, run_ent, run_same};
             // a later member of a tie group carries the run as it stood
@@ -729,7 +772,6 @@ module csgrt_walker #(
                         hs_q <= eff_s;
                         he_q <= eff_e;
                         ht_q <= eff_t;
-                        hc_q <= eff_c;
                     end
                     // this clock's token: its fields always (an enable from
                     // registers), whether it crossed as data
@@ -740,10 +782,7 @@ module csgrt_walker #(
                         pt_q <= ev_t_i;
                     end
                 end
-                if ((ce && load) || !rst_ni) begin
-                    hc_q <= {CB{1'b0}};
-                    pv_q <= 1'b0;
-                end
+                if ((ce && load) || !rst_ni) pv_q <= 1'b0;
             end
             // the hit token's run (misses: 0) rides in the record
             wire [RW-1:0] lb_run = rec_hit ? tg[GW-1:BGW] : {RW{1'b0}};
