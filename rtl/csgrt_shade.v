@@ -425,7 +425,18 @@ module csgrt_shade #(
     // Light sequencer
     // =========================================================================
     reg  [KW_L-1:0] k_q;   // light of the next item
-    wire            sq_use  = sq_pix[PX_HIT] && (num_lights_i != {NLW{1'b0}});
+    // whether the scene has lights, a register of its own: num_lights_i
+    // is static while items flow (as for k_end_q below), and its compare
+    // with zero was the first two LUT levels of a path through sq_last
+    // into skid A's ready and on to every register it enables
+    // (tools/logic_depth.py 12.49 ns, the loader's num_lights_o -> the
+    // ray tree's sh_ready_i)
+    reg             lights_q;
+    always @(posedge clk_i) lights_q <= num_lights_i != {NLW{1'b0}};
+    csgrt_check_same #(.WHAT("lights_q (the scene has lights)")) u_check_lights (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(ska_valid && lights_q),
+        .orig_i(ska_valid && (num_lights_i != {NLW{1'b0}})));
+    wire            sq_use  = sq_pix[PX_HIT] && lights_q;
     // last item: the last light, or the only item of a miss / a scene without lights.
     // The counter's test k_q + 1 >= num_lights_i is a register of its own
     // (k_end_q), loaded every clock with the test of k_q's next value: the
