@@ -262,9 +262,48 @@ module csgrt_class_tree #(
             assign path_w[j] = path_q;
             assign slot_w[j] = slot_q;
             if (j == H) begin : g_border
+                // border_o a clock early: whether the root's classification
+                // c is BORDER from, to with from != to, derived from the
+                // node table (csgrt_class_node) case by case with the
+                // sibling IN m or OUT, so that the material compares run
+                // beside the table's choice instead of after it (decoding
+                // c, they came after the node and the side's choice:
+                // tools/logic_depth.py 12.68 ns, the whole design's longest
+                // path). u_check_border compares it with the decode of c.
+                wire [1:0]    pk = path_w[j-1][CW-1 -: 2];
+                wire [MB-1:0] pf = path_w[j-1][MB +: MB];
+                wire [MB-1:0] pt = path_w[j-1][0 +: MB];
+                wire [MB-1:0] m  = sib[MB-1:0];
+                wire          sin = sib[MB];                    // the sibling is IN m (else OUT)
+                wire          p_io = pk == 2'd0 || pk == 2'd1;  // the path is OUT or IN
+                wire          pb = pk == 2'd2 && pf != pt;      // the path itself is a crossing
+                wire          m_nz = m != {MB{1'b0}};
+                wire          m_ne_pt = m != pt;
+                wire          pf_ne_m = pf != m;
+                wire          pf_z = pf == {MB{1'b0}};
+                wire          pt_z = pt == {MB{1'b0}};
+                reg           b_right, b_left;                  // path on the left / on the right
+                always @* begin
+                    // node(op, path, sib): c is the path or not a crossing
+                    case (op)
+                        2'd0:    b_right = pb;                  // PASS
+                        2'd3:    b_right = pb && sin;           // AND: path & IN, else OUT
+                        default: b_right = pb && !sin;          // ADD, SUB: IN owns / cuts
+                    endcase
+                    // node(op, sib, path)
+                    case (op)
+                        2'd1:    b_left = !sin ? pb :           // ADD: OUT ++ path
+                                          p_io ? 1'b0 :         // path IN owns; sib ++ OUT
+                                          pf_z ? m_ne_pt :      // BORDER m,d
+                                          pt_z ? pf_ne_m : pb;  // BORDER c,m; else the path
+                        2'd2:    b_left = sin && !p_io && (pf_z || pt_z) && m_nz;   // SUB: m,0 / 0,m
+                        2'd3:    b_left = sin && !p_io && (pf_z || pt_z) && m_nz;   // AND: 0,m / m,0
+                        default: b_left = 1'b0;                 // PASS: the sibling
+                    endcase
+                end
                 reg border_q;
                 always @(posedge clk_i)
-                    if (ce_i) border_q <= c[CW-1 -: 2] == 2'd2 && c[MB +: MB] != c[0 +: MB];
+                    if (ce_i) border_q <= on_right ? b_left : b_right;
                 assign border_o = border_q;
             end
         end
