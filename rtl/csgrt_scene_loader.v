@@ -159,7 +159,7 @@ module csgrt_scene_loader #(
     // Stage 2 writes the camera, the lights, the materials and the leaves,
     // from enables (and for the memories an address) decoded in stage 1:
     // one register per word position. Decoded and written in stage 1, an
-    // item's 32-bit compare (it_now < MAX_LIGHTS, MAX_MATERIALS or
+    // item's 32-bit compare (the item < MAX_LIGHTS, MAX_MATERIALS or
     // MAX_LEAVES: a carry chain behind section_start_q's mux) led into the
     // write enables across the die: the light registers' was the routed
     // f8d2add build's critical path, the leaf materials' that of 2a28a4c
@@ -181,9 +181,8 @@ module csgrt_scene_loader #(
     wire [31:0] cam_r = s1_cam_r_q;
     wire [3:0] section_size = in_lights_q ? LIGHT_WORDS[3:0] : in_materials_q ? MATERIAL_WORDS[3:0] : LEAF_WORDS[3:0];
     wire [31:0] w = s1_w_q;   // stage 1's word
-    // this word's field and item within the current section
+    // this word's field within the current section (its item: item_q, or 0 at a start)
     wire [3:0]  f_now  = section_start_q ? 4'd0 : field_q;
-    wire [31:0] it_now = section_start_q ? 32'd0 : item_q;
 
     // Writes into the wide configuration registers go through loops over
     // constant positions (one compare each) rather than part-selects with a
@@ -294,10 +293,16 @@ module csgrt_scene_loader #(
                 // lights: stage 2's enables (f_now < LIGHT_WORDS = 7 here: the
                 // field counter wraps at the section size; an item at or past
                 // MAX_LIGHTS matches no j and is not written)
+                // (At a section's start the word is item 0's field 0: the
+                // compares are of item_q and field_q themselves, the start
+                // choosing after them; through it_now and f32 the start's
+                // 69 loads ran into 32-bit compares, 7 LUT levels to these
+                // enables, tools/logic_depth.py 12.08 ns on 3599434's netlist.)
                 if (in_lights_q)
                     for (j = 0; j < MAX_LIGHTS; j = j + 1)
                         for (f = 0; f < LIGHT_WORDS; f = f + 1)
-                            if (it_now == j && f32 == f) s2_light_we_q[j*LIGHT_WORDS + f] <= 1'b1;
+                            if (section_start_q ? (j == 0 && f == 0) : (item_q == j && {28'd0, field_q} == f))
+                                s2_light_we_q[j*LIGHT_WORDS + f] <= 1'b1;
                 if (in_materials_q) begin
                     // words: r g b filter ambient diffuse phong reflection ior phong_size
                     case (f_now)
@@ -310,9 +315,9 @@ module csgrt_scene_loader #(
                         4'd7: mat_acc_q[96 +: 16] <= w[15:0];
                         4'd3: mat_acc_q[112 +: 16] <= w[15:0];   // filter
                         4'd8: mat_acc_q[128 +: 16] <= w[15:0];   // ior
-                        4'd9: begin   // the record: stage 2
-                                  s2_mat_we_q   <= it_now < MAX_MATERIALS;
-                                  s2_mat_addr_q <= it_now[7:0] + 8'd1;
+                        4'd9: begin   // the record: stage 2 (field 9 is not a start: item_q is the item)
+                                  s2_mat_we_q   <= item_q < MAX_MATERIALS;
+                                  s2_mat_addr_q <= item_q[7:0] + 8'd1;
                               end
                         default: ;
                     endcase
@@ -321,9 +326,9 @@ module csgrt_scene_loader #(
                     if (f_now < 10) begin
                         for (f = 0; f < 10; f = f + 1)
                             if (f32 == f) coef_acc_q[f * BITS +: BITS] <= w[BITS-1:0];
-                    end else begin   // the leaf: stage 2
-                        s2_leaf_we_q   <= it_now < MAX_LEAVES;
-                        s2_leaf_addr_q <= it_now[LEAF_BITS-1:0];
+                    end else begin   // the leaf: stage 2 (field 10 is not a start: item_q is the item)
+                        s2_leaf_we_q   <= item_q < MAX_LEAVES;
+                        s2_leaf_addr_q <= item_q[LEAF_BITS-1:0];
                     end
                 end
 
