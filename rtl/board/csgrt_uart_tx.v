@@ -19,30 +19,49 @@ module csgrt_uart_tx #(
     reg [CW-1:0] cnt_q;
     reg [3:0]    left_q;             // bits still to send, 0: idle
     reg [8:0]    sh_q;               // {stop, data} still to send
-    assign ready_o = (left_q == 4'd0);
+    // left_q == 0, left_q == 1 and cnt_q == 0 as registers of their own,
+    // loaded with the tests of the next values: as compares they were three
+    // LUT levels of a six-level path into sh_q (tools/logic_depth.py
+    // 11.66 ns, the transmitter's longest); u_check_tests compares them
+    reg          idle_q, last_q, cnt_zero_q;
+    localparam   BIT_LAST_ZERO = (DIV == 1);
+    assign ready_o = idle_q;
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
-            tx_o   <= 1'b1;
-            left_q <= 4'd0;
-            cnt_q  <= {CW{1'b0}};
-        end else if (left_q == 4'd0) begin
+            tx_o       <= 1'b1;
+            left_q     <= 4'd0;
+            cnt_q      <= {CW{1'b0}};
+            idle_q     <= 1'b1;
+            last_q     <= 1'b0;
+            cnt_zero_q <= 1'b1;
+        end else if (idle_q) begin
             if (valid_i) begin
-                tx_o   <= 1'b0;                   // start bit
-                sh_q   <= {1'b1, data_i};
-                left_q <= 4'd10;
-                cnt_q  <= BIT_LAST;
+                tx_o       <= 1'b0;               // start bit
+                sh_q       <= {1'b1, data_i};
+                left_q     <= 4'd10;
+                idle_q     <= 1'b0;
+                last_q     <= 1'b0;
+                cnt_q      <= BIT_LAST;
+                cnt_zero_q <= BIT_LAST_ZERO;
             end
-        end else if (cnt_q != {CW{1'b0}}) begin
-            cnt_q <= cnt_q - 1'b1;
+        end else if (!cnt_zero_q) begin
+            cnt_q      <= cnt_q - 1'b1;
+            cnt_zero_q <= cnt_q == {{(CW-1){1'b0}}, 1'b1};
         end else begin
             left_q <= left_q - 4'd1;
-            if (left_q != 4'd1) begin
-                tx_o  <= sh_q[0];
-                sh_q  <= {1'b1, sh_q[8:1]};
-                cnt_q <= BIT_LAST;
+            idle_q <= last_q;
+            last_q <= left_q == 4'd2;
+            if (!last_q) begin
+                tx_o       <= sh_q[0];
+                sh_q       <= {1'b1, sh_q[8:1]};
+                cnt_q      <= BIT_LAST;
+                cnt_zero_q <= BIT_LAST_ZERO;
             end
         end
     end
+    csgrt_check_same #(.WIDTH(3), .WHAT("the transmitter's tests (idle_q, last_q, cnt_zero_q)")) u_check_tests (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i({idle_q, last_q, cnt_zero_q}),
+        .orig_i({left_q == 4'd0, left_q == 4'd1, cnt_q == {CW{1'b0}}}));
 endmodule
 `default_nettype wire
