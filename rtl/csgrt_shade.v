@@ -457,10 +457,21 @@ module csgrt_shade #(
     function automatic k_end(input [KW_L-1:0] k);   // k + 1 >= num_lights_i
         k_end = {{(NLW+1-KW_L){1'b0}}, k} + {{NLW{1'b0}}, 1'b1} >= nl_x;
     endfunction
+    // k_q one-hot (k_oh_q), stepped as k_q is, for B1's choice of the
+    // light: the choice by k_q's compares hung on its ~250 loads and took
+    // five LUT levels into the beat cut (tools/logic_depth.py 11.43 ns)
+    reg  [MAX_LIGHTS-1:0] k_oh_q;
+    localparam [MAX_LIGHTS-1:0] K_OH_FIRST = 1;
+    wire [MAX_LIGHTS-1:0] k_oh_d = !rst_ni ? K_OH_FIRST :
+                                   !issue  ? k_oh_q :
+                                   sq_last ? K_OH_FIRST : k_oh_q << 1;
     always @(posedge clk_i) begin
         k_q     <= k_d;
+        k_oh_q  <= k_oh_d;
         k_end_q <= k_end(k_d);
     end
+    csgrt_check_same #(.WIDTH(MAX_LIGHTS), .WHAT("k_oh_q (k_q one-hot)")) u_check_k_oh (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(k_oh_q), .orig_i(K_OH_FIRST << k_q));
     // checked while an item waits in skid A (the only time it is read)
     csgrt_check_same #(.WHAT("k_end_q")) u_check_k_end (
         .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(ska_valid && k_end_q), .orig_i(ska_valid && k_end(k_q)));
@@ -495,11 +506,11 @@ module csgrt_shade #(
     always @* begin
         lpa_sel  = {(3*PSW){1'b0}};
         lcol_sel = 48'd0;
-        for (kl = 0; kl < MAX_LIGHTS; kl = kl + 1)
-            if ({{(32-KW_L){1'b0}}, k_q} == kl) begin
-                lpa_sel  = lpa_q[kl*3*PSW +: 3*PSW];
-                lcol_sel = light_color_i[kl*48 +: 48];
-            end
+        // an AND-OR over the lights, selected by k_oh_q
+        for (kl = 0; kl < MAX_LIGHTS; kl = kl + 1) begin
+            lpa_sel  = lpa_sel  | (lpa_q[kl*3*PSW +: 3*PSW] & {(3*PSW){k_oh_q[kl]}});
+            lcol_sel = lcol_sel | (light_color_i[kl*48 +: 48] & {48{k_oh_q[kl]}});
+        end
     end
     wire [3*PSW-1:0] lpa_cut;
     csgrt_beat_cut #(.WIDTH(3*PSW), .II(II)) u_cut_b1 (
