@@ -591,13 +591,37 @@ module csgrt_raytree #(
     //  - a colour ray's hit that wants no children;
     //  - a shadow ray that ends, the context's last pending, its
     //    children all spawned.
-    wire shade_ch = ev_ch && e_ch_last && pend_q[e_ch_user] == {PW{1'b0}} && !(e_ch_kind == K_SHADOW && e_ch_lit);
+    // Made per context, each from its own counter and flag: read at the
+    // event's context (P-way multiplexers) and decoded after, the set ran
+    // through seven LUT levels into shq_any_q with the priority choice
+    // (tools/logic_depth.py 12.52 ns, e_h_ctx -> the pending count's read
+    // -> shade_d -> lowest()). A child event (ev_ch) and the hit events
+    // (which need !ev_ch) never meet, so the order among them is moot. A
+    // simulation check compares the set with the choice written out.
+    wire shade_ch_any = ev_ch && e_ch_last && !(e_ch_kind == K_SHADOW && e_ch_lit);
     wire shade_hc = !ev_ch && ev_hp && !e_h_shadow && e_h_colour_hit && !e_want_spawn;
-    wire shade_sh = !ev_ch && ev_hp && e_h_shadow && e_sh_ends && pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1}
-                    && !spawning_q[e_h_ctx];
-    wire [P-1:0] shade_set = ev_ct ? {P{1'b0}}
-                           : shade_ch ? ctx_onehot(e_ch_user)
-                           : (shade_hc || shade_sh) ? ctx_onehot(e_h_ctx) : {P{1'b0}};
+    wire shade_sh_any = !ev_ch && ev_hp && e_h_shadow && e_sh_ends;
+    wire [P-1:0] shade_set;
+    genvar gk;
+    generate
+        for (gk = 0; gk < P; gk = gk + 1) begin : g_shade_set
+            localparam [CB-1:0] K = gk;
+            wire ch_here = e_ch_user == K;
+            wire h_here  = e_h_ctx == K;
+            assign shade_set[gk] = !ev_ct &&
+                ((shade_ch_any && ch_here && pend_q[gk] == {PW{1'b0}}) ||
+                 (h_here && (shade_hc || (shade_sh_any && pend_q[gk] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[gk]))));
+        end
+    endgenerate
+`ifndef SYNTHESIS
+    wire shade_ch = shade_ch_any && pend_q[e_ch_user] == {PW{1'b0}};
+    wire shade_sh = shade_sh_any && pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[e_h_ctx];
+    wire [P-1:0] shade_set_ref = ev_ct ? {P{1'b0}}
+                               : shade_ch ? ctx_onehot(e_ch_user)
+                               : (shade_hc || shade_sh) ? ctx_onehot(e_h_ctx) : {P{1'b0}};
+    csgrt_check_same #(.WIDTH(P), .WHAT("shade_set (per context)")) u_check_shade_set (
+        .clk_i, .rst_ni, .copy_i(shade_set), .orig_i(shade_set_ref));
+`endif
     assign shade_d = (shade_q & ~(sh_issue ? ctx_onehot(shq_ctx) : {P{1'b0}})) | shade_set;
     assign sh_valid_o = sh_valid_q;
     assign sh_tag_o   = {{(12-CB){1'b0}}, sh_ctx_q};
