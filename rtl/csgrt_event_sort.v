@@ -157,6 +157,7 @@ module csgrt_event_sort #(
     output wire                     ev_entering_o,
     output wire                     ev_same_t_o,      // its t equals the ray's previously popped event's
     output wire [TREE_HEIGHT-1:0]   ev_next_slot_o,   // the next event's slot (the head's after a pop)
+    output wire [TREE_HEIGHT-1:0]   ev_slot_tree_o,   // ev_slot_o from a copy of its own, for the walker's class tree
     output wire                     ev_next_same_t_o, // the next event's t equals the head's (same_t_q after a pop)
     input  wire                     ev_pop_i
 );
@@ -404,6 +405,20 @@ module csgrt_event_sort #(
     wire [DW-UW-H-1:0] unused_second = {second[DW-UW-1:H+1], second[0]};
     wire next_same_t = second[DW-1 -: UW] == head[DW-1 -: UW];
     assign ev_next_slot_o = second[1 +: H];
+    // The head's slot once more, from flip-flops of their own loaded as
+    // head_q is, for the walker's class tree (its stage-0 reads by slot):
+    // on head_q (319 loads) the placer kept the sorter's head far from the
+    // tree, and 3599434's routed critical path ran from it across the die
+    // (3.82 ns of route) into the tree's stage 0. (* keep *) on the always
+    // block: yosys merges flip-flops of the same input otherwise.
+    reg  [H-1:0] head_slot_q;
+    (* keep *) always @(posedge clk_i) begin
+        if (handover)  head_slot_q <= fill_w[0][1 +: H];
+        else if (pop)  head_slot_q <= second_q[1 +: H];
+    end
+    assign ev_slot_tree_o = head_slot_q;
+    csgrt_check_same #(.WIDTH(H), .WHAT("head_slot_q (the head's slot for the class tree)")) u_check_head_slot (
+        .clk_i, .rst_ni, .copy_i(dne_q ? head_slot_q : {H{1'b0}}), .orig_i(dne_q ? head[1 +: H] : {H{1'b0}}));
     assign ev_next_same_t_o = next_same_t;
     assign ev_same_t_o = same_t_q;
 

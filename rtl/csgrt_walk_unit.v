@@ -127,7 +127,7 @@ module csgrt_walk_unit #(
     wire [PW-1:0]            sort_payload_in, walk_payload, walk_q_payload;
     wire [BITS-2:0]          ev_t;
     wire [LEAF_BITS-1:0]     ev_leaf;
-    wire [TREE_HEIGHT-1:0]   ev_slot, ev_next_slot;
+    wire [TREE_HEIGHT-1:0]   ev_slot, ev_next_slot, ev_slot_tree;
 
     csgrt_event_sort #(
         .BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .LEAF_BITS(LEAF_BITS),
@@ -145,7 +145,8 @@ module csgrt_walk_unit #(
         .info_lb_same_t_i(info_lb_same_t_i),
         .ray_valid_o(ray_valid), .ray_flags_o(ray_flags), .ray_payload_o(ray_payload), .ray_done_i(ray_done),
         .ev_valid_o(ev_valid), .ev_last_o(ev_last), .ev_t_o(ev_t), .ev_leaf_o(ev_leaf), .ev_slot_o(ev_slot),
-        .ev_entering_o(ev_entering), .ev_same_t_o(ev_same_t), .ev_next_slot_o(ev_next_slot), .ev_next_same_t_o(ev_next_same_t), .ev_pop_i(ev_pop));
+        .ev_entering_o(ev_entering), .ev_same_t_o(ev_same_t), .ev_next_slot_o(ev_next_slot), .ev_next_same_t_o(ev_next_same_t), .ev_pop_i(ev_pop),
+        .ev_slot_tree_o(ev_slot_tree));
 
     csgrt_walker #(
         .BITS(BITS), .LEAF_BITS(LEAF_BITS), .TREE_HEIGHT(TREE_HEIGHT),
@@ -157,6 +158,7 @@ module csgrt_walk_unit #(
         .ray_valid_i(ray_valid), .ray_flags_i(ray_flags), .ray_payload_i(ray_payload), .ray_done_o(ray_done),
         .ev_valid_i(ev_valid), .ev_last_i(ev_last), .ev_t_i(ev_t), .ev_leaf_i(ev_leaf), .ev_slot_i(ev_slot),
         .ev_entering_i(ev_entering), .ev_same_t_i(ev_same_t), .ev_next_slot_i(ev_next_slot), .ev_next_same_t_i(ev_next_same_t), .ev_pop_o(ev_pop),
+        .ev_slot_tree_i(ev_slot_tree),
         .valid_o(valid_o), .ready_i(ready_i), .hit_o(hit_o), .t_o(t_o), .leaf_o(leaf_o), .slot_o(slot_o),
         .entering_o(entering_o), .from_o(from_o), .to_o(to_o), .flags_before_o(flags_before_o),
         .payload_o(walk_payload), .flags_after_o(flags_after_o), .lb_count_o(lb_count_o), .lb_slot_o(lb_slot_o),

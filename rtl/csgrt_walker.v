@@ -123,6 +123,7 @@ module csgrt_walker #(
     input  wire                     ev_entering_i,
     input  wire                     ev_same_t_i,   // ev_t_i equals the ray's previous popped event's (csgrt_event_sort)
     input  wire [TREE_HEIGHT-1:0]   ev_next_slot_i,   // the next event's slot, the head's after a pop (csgrt_event_sort)
+    input  wire [TREE_HEIGHT-1:0]   ev_slot_tree_i,   // ev_slot_i from a copy of its own, for the class tree
     input  wire                     ev_next_same_t_i, // the next event's t equals the head's (csgrt_event_sort)
     output wire                     ev_pop_o,
     // hit records
@@ -377,7 +378,7 @@ module csgrt_walker #(
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce),
         .node_op_i(node_op_i), .slot_mat_i(slot_mat_i), .slot_used_i(slot_used_i),
         .valid_i(issue), .flags_i(fl_cur), .flags_alt_i(gfl_q), .alt_i(probe), .sib_flag_i(probe ? gh_q[1] : fh_q[1]),
-        .slot_i(ev_slot_i), .entering_i(ev_entering_i), .tag_i(tag_in),
+        .slot_i(ev_slot_tree_i), .entering_i(ev_entering_i), .tag_i(tag_in),
         .valid_o(tv), .class_o(tc), .border_o(border), .tag_o(tg));
 
     // ---- flags just before the hit --------------------------------------
