@@ -377,7 +377,9 @@ module csgrt_event_sort #(
     reg           pop_q;                   // the cells owe one shift
     reg  [DW-1:0] head_q, second_q;        // the ray's next event and the one after it
     wire [DW-1:0] after_second = pop_q ? drain_w[3] : drain_w[2];   // the event after second_q
-    always @(posedge clk_i) begin
+    // (* keep *), as on head_slot_q's block below: with the keep on the
+    // copy alone, yosys merged head_q's slot bits into the copy (opt_merge)
+    (* keep *) always @(posedge clk_i) begin
         pop_q <= pop && rst_ni;
         if (handover) begin
             head_q   <= fill_w[0];
