@@ -941,8 +941,8 @@ module csgrt_raytree #(
     //  - pend_q: +1 a lit shadow ray, -1 a shadow ray's end, 0 a colour hit.
     localparam [1:0] C_KEEP = 2'd0, C_INC = 2'd1, C_DEC = 2'd2, C_CLEAR = 2'd3;
     reg  [1:0]    sp_op_q, pend_op_q;
-    reg  [CB-1:0] sp_ctx_q, pend_ctx_q;
-    reg  [P-1:0]  pend_oh_q;            // pend_ctx_q one-hot
+    reg  [CB-1:0] sp_ctx_q;
+    reg  [P-1:0]  pend_oh_q;            // the pending counter's context, one-hot
     integer       pc;
     // a child kept on its context's stack (not a shadow ray)
     function stacked(input [2:0] kind);
@@ -965,13 +965,12 @@ module csgrt_raytree #(
                        : (ev0_hp && !h_shadow && h_colour_hit) ? C_CLEAR : C_KEEP;
         end
         sp_ctx_q   <= ch_valid_i ? ch_user_i : pop_staged_q ? pop_ctx_q : free_ctx;
-        pend_ctx_q <= ch_valid_i ? ch_user_i : h_ctx;
         if (sp_op_q != C_KEEP)   sp_q[sp_ctx_q]     <= sp_next(sp_op_q, sp_q[sp_ctx_q]);
-        // per context, from a one-hot code of pend_ctx_q: each counter
-        // steps its own value (read through pend_ctx_q's P-way multiplexer
-        // and written back through its decode, the read, the step and the
-        // write's enable were six LUT levels, tools/logic_depth.py 11.45 ns
-        // on 3599434's netlist)
+        // per context, from a one-hot code of the context: each counter
+        // steps its own value (read through a P-way multiplexer of a
+        // context register and written back through its decode, the read,
+        // the step and the write's enable were six LUT levels,
+        // tools/logic_depth.py 11.45 ns on 3599434's netlist)
         pend_oh_q <= ch_valid_i ? ctx_onehot(ch_user_i) : ctx_onehot(h_ctx);
         for (pc = 0; pc < P; pc = pc + 1)
             if (pend_op_q != C_KEEP && pend_oh_q[pc]) pend_q[pc] <= pend_next(pend_op_q, pend_q[pc]);
@@ -991,13 +990,13 @@ module csgrt_raytree #(
                           : (ev_hp && !e_h_shadow && e_h_colour_hit) ? C_CLEAR : C_KEEP;
     wire [CB-1:0] sp_ctx_ev   = ev_ch ? e_ch_user : ev_pop ? pop_ctx_q : e_free_ctx;
     wire [CB-1:0] pend_ctx_ev = ev_ch ? e_ch_user : e_h_ctx;
-    csgrt_check_same #(.WIDTH(P), .WHAT("pend_oh_q (pend_ctx_q one-hot)")) u_check_pend_oh (
+    csgrt_check_same #(.WIDTH(P), .WHAT("pend_oh_q (the pending counter's context, one-hot)")) u_check_pend_oh (
         .clk_i, .rst_ni, .copy_i(pend_op_q != C_KEEP ? pend_oh_q : {P{1'b0}}),
-        .orig_i(pend_op_q != C_KEEP ? ctx_onehot(pend_ctx_q) : {P{1'b0}}));
-    csgrt_check_same #(.WIDTH(4 + 2 * CB), .WHAT("the counters' operations (sp_op_q, sp_ctx_q, pend_op_q, pend_ctx_q)")) u_check_count (
+        .orig_i(pend_op_ev != C_KEEP ? ctx_onehot(pend_ctx_ev) : {P{1'b0}}));
+    csgrt_check_same #(.WIDTH(4 + CB), .WHAT("the counters' operations (sp_op_q, sp_ctx_q, pend_op_q)")) u_check_count (
         .clk_i, .rst_ni,
-        .copy_i({sp_op_q, sp_op_q != C_KEEP ? sp_ctx_q : {CB{1'b0}}, pend_op_q, pend_op_q != C_KEEP ? pend_ctx_q : {CB{1'b0}}}),
-        .orig_i({sp_op_ev, sp_op_ev != C_KEEP ? sp_ctx_ev : {CB{1'b0}}, pend_op_ev, pend_op_ev != C_KEEP ? pend_ctx_ev : {CB{1'b0}}}));
+        .copy_i({sp_op_q, sp_op_q != C_KEEP ? sp_ctx_q : {CB{1'b0}}, pend_op_q}),
+        .orig_i({sp_op_ev, sp_op_ev != C_KEEP ? sp_ctx_ev : {CB{1'b0}}, pend_op_ev}));
 `endif
     // A light's colour for a shaded context: zero for a light a child did
     // not light (its shadow ray is not traced), or what the light's shadow
