@@ -774,7 +774,21 @@ module csgrt_raytree #(
     // stack test) as the address select, four LUT levels from ev_ct into
     // the distributed RAM's write address (tools/logic_depth.py's longest
     // path, 13.62 ns).
-    wire           hp_ends = ev_hp && !e_h_shadow && !e_h_colour_hit && !hpp_more_q;   // a miss ends its pixel
+    // A colour ray's miss in E1 (ev_hp, not a shadow ray, no hit) as a
+    // register loaded in E0 from the event's choice and the head's fields:
+    // decoded from ev_hp and the e_* fields, it was three LUT levels in
+    // front of the output buffer's distributed-RAM write enables
+    // (tools/logic_depth.py's longest path, 11.82 ns on 9f2f1a7's netlist);
+    // a simulation check compares it with that decode.
+    reg            hpm_q;
+    always @(posedge clk_i)
+        if (!rst_ni) hpm_q <= 1'b0;
+        else         hpm_q <= ev0_hp && !h_shadow && !h_colour_hit;
+`ifndef SYNTHESIS
+    csgrt_check_same #(.WHAT("hpm_q (a colour ray's miss event)")) u_check_hpm (
+        .clk_i, .rst_ni, .copy_i(hpm_q), .orig_i(ev_hp && !e_h_shadow && !e_h_colour_hit));
+`endif
+    wire           hp_ends = hpm_q && !hpp_more_q;   // a miss ends its pixel
     wire           ob_we   = ev_ct ? !ctp_more_q : hp_ends;
     wire [OBW-1:0] ob_slot = ev_ct ? ctp_slot_q : hpp_slot_q;
     // The valid bits: set at the slot written, cleared at the retire
@@ -917,7 +931,7 @@ module csgrt_raytree #(
         end
         if (ev_ct) begin
             acc_q[ctp_ctx_q] <= ctp_sum_q;
-        end else if (ev_hp && !e_h_shadow && !e_h_colour_hit) begin
+        end else if (hpm_q) begin
             // a colour ray's miss
             acc_q[e_h_ctx] <= hpp_sum_q;
         end else if (ev_cam) begin
