@@ -239,6 +239,14 @@ TEST(FrameEffects, ShadowlessLights) {
     EXPECT_NE(a.rgb, b.rgb) << "the fill light casts no visible shadow at 40x30";
 }
 
+// A light inside an object: a shadow ray from outside crosses a leaf once
+// before the light and once past it, so the ray's t limit keeps one of the
+// leaf's two events (the event sorter's input stage counts them: no other
+// scene here has a leaf straddle a light).
+TEST(FrameEffects, LightInsideAnObject) {
+    expect_pixel_exact("lantern", scene_file("lantern"), 40, 30, TiePolicy::Regular);
+}
+
 TEST(FrameEffects, BackPressureLosesNothing) {
     expect_pixel_exact("mirror, 40% ready", scene_file("mirror"), 24, 18, TiePolicy::Paper, 40);
 }
