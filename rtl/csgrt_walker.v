@@ -306,7 +306,7 @@ module csgrt_walker #(
     always @(posedge clk_i)
         if (!rst_ni)
             probe_q <= 1'b0;
-        else if (ce) begin
+        else begin   // (load, crossing and issue include ce_ctl: the walker's ce)
             if (load)          probe_q <= 1'b0;
             else if (crossing) probe_q <= ev_next_same_t_i;
             else if (issue)    probe_q <= 1'b0;
@@ -347,7 +347,7 @@ module csgrt_walker #(
         end
     endgenerate
     always @(posedge clk_i)
-        if (ce && (load || crossing)) hoh_q <= hoh_d;
+        if (load || crossing) hoh_q <= hoh_d;
     csgrt_check_same #(.WIDTH(NS), .WHAT("hoh_q (the head's slot one-hot)")) u_check_hoh (
         .clk_i, .rst_ni, .copy_i(crossing ? hoh_q : {NS{1'b0}}),
         .orig_i(crossing ? {{(NS-1){1'b0}}, 1'b1} << ev_slot_i : {NS{1'b0}}));
@@ -357,13 +357,12 @@ module csgrt_walker #(
             wire [H-1:0] next_at = ev_next_slot_i ^ p[H-1:0];   // the next head's slot (or sibling)
             wire [H-1:0] head_at = ev_slot_i ^ p[H-1:0];
             wire         cur_next = seq_q ? fl1_q[next_at] : fl0_q[next_at];   // before this clock's write
-            always @(posedge clk_i)
-                if (ce) begin
-                    if (load)          fh_q[p] <= ray_flags_i[head_at];
-                    else if (crossing) fh_q[p] <= (next_at == ev_slot_i) ? ev_entering_i : cur_next;
-                    if (crossing)      gh_q[p] <= later ? gfl_q[next_at] : cur_next;
-                    else if (!later)   gh_q[p] <= fh_q[p];
-                end
+            always @(posedge clk_i) begin
+                if (load)          fh_q[p] <= ray_flags_i[head_at];
+                else if (crossing) fh_q[p] <= (next_at == ev_slot_i) ? ev_entering_i : cur_next;
+                if (crossing)          gh_q[p] <= later ? gfl_q[next_at] : cur_next;
+                else if (ce && !later) gh_q[p] <= fh_q[p];
+            end
             csgrt_check_same #(.WIDTH(2), .WHAT("fh_q / gh_q (the flags at the head's slot)")) u_check_head_flag (
                 .clk_i, .rst_ni,
                 .copy_i(issue && ev_valid_i ? {fh_q[p], probe && gh_q[p]} : 2'b00),
@@ -471,11 +470,6 @@ module csgrt_walker #(
             sh_seq_q   <= {sh_seq_q[TL-2:0], seq_q};
             sh_skip_q  <= {sh_skip_q[TL-2:0], !toggle};
             sh_slot_q  <= {sh_slot_q[H*(TL-1)-1:0], ev_slot_i};
-            if (issue && probe) pr_q <= 1'b1;
-            if (issue && !probe) begin
-                pr_q <= 1'b0;
-                if (ev_valid_i) gv_q <= 1'b1;
-            end
             // gfl_q follows the bank on every clock whose head is not a
             // later member of a tie group, so it holds the flags from the
             // clock the group's first member issues until the group ends.
@@ -487,30 +481,41 @@ module csgrt_walker #(
             // simulation check compares it at every probe with a copy
             // loaded only at the first member's issue.
             if (!later) gfl_q <= fl_cur;
-            // The crossing leaves the flag at the event's side whether it
-            // toggles it (the flag was !entering) or is skipped as invalid
-            // (it was entering already), so the bank is written with
-            // ev_entering_i and its write needs no read of the flag: the
-            // 128-to-1 choice of the token's flag stays off the bank's loop
-            // (it was the walker's critical path on the FPGA, docs/fpga.md).
-            // The write's slot comes one-hot from a register (hoh_q): its
-            // decode from the sorter's head (319 loads) was most of the
-            // whole design's longest path into the banks
-            // (tools/logic_depth.py 12.74 ns).
-            if (crossing) begin
-                if (seq_q) fl1_q <= (fl1_q & ~hoh_q) | (hoh_q & {NS{ev_entering_i}});
-                else       fl0_q <= (fl0_q & ~hoh_q) | (hoh_q & {NS{ev_entering_i}});
-            end
-            if (load) begin
-                gv_q <= 1'b0;
-                pr_q <= 1'b0;
-                if (seq_q) begin
-                    fl0_q <= ray_flags_i;
-                    pl0_q <= ray_payload_i;
-                end else begin
-                    fl1_q <= ray_flags_i;
-                    pl1_q <= ray_payload_i;
-                end
+        end
+        // The writes at an issue, a crossing or a load: these include
+        // ce_ctl, which equals ce (u_check_ready) but comes from a
+        // register of its own. Nested in `if (ce)` as well, the enables
+        // ANDed ce_ctl's crossing with the output skid's ready (ce) again,
+        // a fourth LUT level into the flag registers' and banks' enables
+        // (tools/logic_depth.py 11.44 ns on 9f2f1a7's netlist).
+        if (issue && probe) pr_q <= 1'b1;
+        if (issue && !probe) begin
+            pr_q <= 1'b0;
+            if (ev_valid_i) gv_q <= 1'b1;
+        end
+        // The crossing leaves the flag at the event's side whether it
+        // toggles it (the flag was !entering) or is skipped as invalid
+        // (it was entering already), so the bank is written with
+        // ev_entering_i and its write needs no read of the flag: the
+        // 128-to-1 choice of the token's flag stays off the bank's loop
+        // (it was the walker's critical path on the FPGA, docs/fpga.md).
+        // The write's slot comes one-hot from a register (hoh_q): its
+        // decode from the sorter's head (319 loads) was most of the
+        // whole design's longest path into the banks
+        // (tools/logic_depth.py 12.74 ns).
+        if (crossing) begin
+            if (seq_q) fl1_q <= (fl1_q & ~hoh_q) | (hoh_q & {NS{ev_entering_i}});
+            else       fl0_q <= (fl0_q & ~hoh_q) | (hoh_q & {NS{ev_entering_i}});
+        end
+        if (load) begin
+            gv_q <= 1'b0;
+            pr_q <= 1'b0;
+            if (seq_q) begin
+                fl0_q <= ray_flags_i;
+                pl0_q <= ray_payload_i;
+            end else begin
+                fl1_q <= ray_flags_i;
+                pl1_q <= ray_payload_i;
             end
         end
         if (!rst_ni) begin
@@ -520,7 +525,7 @@ module csgrt_walker #(
             pr_q       <= 1'b0;
             done_q     <= 2'b00;
             sh_valid_q <= {TL{1'b0}};
-        end else if (ce) begin
+        end else begin   // (load and ray_done_o include ce_ctl)
             if (load) begin
                 act_q          <= 1'b1;
                 seq_q          <= !seq_q;
@@ -528,7 +533,7 @@ module csgrt_walker #(
             end else if (ray_done_o) begin
                 act_q <= 1'b0;
             end
-            if (fin_hit) done_q[t_seq] <= 1'b1;
+            if (ce && fin_hit) done_q[t_seq] <= 1'b1;
         end
     end
     // the next act_q && !done_q[seq_q], from the updates above: a load
