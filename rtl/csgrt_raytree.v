@@ -598,9 +598,17 @@ module csgrt_raytree #(
     // -> shade_d -> lowest()). A child event (ev_ch) and the hit events
     // (which need !ev_ch) never meet, so the order among them is moot. A
     // simulation check compares the set with the choice written out.
-    wire shade_ch_any = ev_ch && e_ch_last && !(e_ch_kind == K_SHADOW && e_ch_lit);
-    wire shade_hc = !ev_ch && ev_hp && !e_h_shadow && e_h_colour_hit && !e_want_spawn;
-    wire shade_sh_any = !ev_ch && ev_hp && e_h_shadow && e_sh_ends;
+    // The three kinds of event that may set a context to shade are
+    // registers loaded in E0 from the event's choice and its source's
+    // fields (as hpm_q is): decoded in E1 from ev_hp, ev_ch and the e_*
+    // fields, they were two LUT levels at the start of the set, and so of
+    // the whole design's longest path on 0adc21f's netlist (ev_hp ->
+    // shade_set -> shade_d -> lowest() -> shq_ctx_q, 7 LUT levels,
+    // tools/logic_depth.py 11.78 ns). Each implies an event other than a
+    // contribution, so the set needs no !ev_ct. Simulation checks compare
+    // them with the decodes.
+    // (loaded below, after the hit's decisions)
+    reg shade_ch_any, shade_hc, shade_sh_any;
     wire [P-1:0] shade_set;
     genvar gk;
     generate
@@ -608,12 +616,17 @@ module csgrt_raytree #(
             localparam [CB-1:0] K = gk;
             wire ch_here = e_ch_user == K;
             wire h_here  = e_h_ctx == K;
-            assign shade_set[gk] = !ev_ct &&
-                ((shade_ch_any && ch_here && pend_q[gk] == {PW{1'b0}}) ||
-                 (h_here && (shade_hc || (shade_sh_any && pend_q[gk] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[gk]))));
+            assign shade_set[gk] =
+                (shade_ch_any && ch_here && pend_q[gk] == {PW{1'b0}}) ||
+                (h_here && (shade_hc || (shade_sh_any && pend_q[gk] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[gk])));
         end
     endgenerate
 `ifndef SYNTHESIS
+    csgrt_check_same #(.WIDTH(3), .WHAT("shade_ch_any / shade_hc / shade_sh_any (the shading's event kinds)")) u_check_shade_kinds (
+        .clk_i, .rst_ni, .copy_i({shade_ch_any, shade_hc, shade_sh_any}),
+        .orig_i({ev_ch && e_ch_last && !(e_ch_kind == K_SHADOW && e_ch_lit),
+                 !ev_ch && ev_hp && !e_h_shadow && e_h_colour_hit && !e_want_spawn,
+                 !ev_ch && ev_hp && e_h_shadow && e_sh_ends}));
     wire shade_ch = shade_ch_any && pend_q[e_ch_user] == {PW{1'b0}};
     wire shade_sh = shade_sh_any && pend_q[e_h_ctx] == {{(PW-1){1'b0}}, 1'b1} && !spawning_q[e_h_ctx];
     wire [P-1:0] shade_set_ref = ev_ct ? {P{1'b0}}
@@ -668,6 +681,14 @@ module csgrt_raytree #(
     endgenerate
     wire        h_colour_hit = h_hit && hp_in_range;
     wire        want_spawn   = want_refl || want_refr || (light_mask != {MAX_LIGHTS{1'b0}});
+    // the shading's event kinds (shade_set above), loaded in E0
+    always @(posedge clk_i)
+        if (!rst_ni) {shade_ch_any, shade_hc, shade_sh_any} <= 3'b000;
+        else begin
+            shade_ch_any <= ev0_ch && ch_last_i && !(ch_kind_i == K_SHADOW && ch_lit_i);
+            shade_hc     <= ev0_hp && !h_shadow && h_colour_hit && !want_spawn;
+            shade_sh_any <= ev0_hp && h_shadow && hp_sh_ends;
+        end
 
     // ---- state updates ---------------------------------------------------------------------
     // entry idx of a context's stack
