@@ -281,7 +281,13 @@ module csgrt_event_sort #(
     // INSERTS = 1, two events ahead: this clock inserts a, b stays (split)
     wire s1_split = (INSERTS == 1) && s1_two_q;
     wire s1_done  = s1_adv && !s1_split;                   // the leaf leaves the stage
-    wire in_ready = !s1_valid_q || (!fb_q && !s1_split);
+    // The stage's ready itself is a register too (in_ready_q, loaded with
+    // its next value below): as a LUT of fb_q, s1_two_q and s1_valid_q it
+    // still took the info queue's valid as a fifth input, two LUT levels
+    // in front of the ready's 88 loads and the info pop (tools/
+    // logic_depth.py 11.27 ns on 0adc21f's netlist). A check compares it.
+    reg  in_ready_q;
+    wire in_ready = in_ready_q;
     wire flag_in;                          // the slot's origin flag
     // look-behind fix-up (SECONDARY), applied with the ray's handover: entry
     // e sets the flag of its slot to !fix_ent[e] iff fix_lo's and fix_hi's
@@ -565,9 +571,12 @@ module csgrt_event_sort #(
         end
     endgenerate
 
-    // the fill bank's and the drain bank's next state
+    // the fill bank's and the drain bank's next state, and the input
+    // stage's (in_ready_q's next value)
     wire full_d = (s1_done && s1_last_q) || (full_q && !handover);
     wire busy_d = handover || (busy_q && !ray_done_i);
+    wire s1_valid_d = in_fire || (s1_valid_q && !s1_done);
+    wire s1_two_d   = in_fire ? (ahead0 && keep0 && ahead1 && keep1) : (s1_adv && s1_split) ? 1'b0 : s1_two_q;
     integer fs, fe;
     always @(posedge clk_i) begin
         // input stage
@@ -644,6 +653,7 @@ module csgrt_event_sort #(
             busy_q <= busy_d;
             fb_q   <= full_d && busy_d;
         end
+        in_ready_q <= !rst_ni || !s1_valid_d || (!(full_d && busy_d) && !((INSERTS == 1) && s1_two_d));
         // the next full_q && !busy_q (both as set just above)
         handover_q <= rst_ni && full_d && !busy_d;
     end
@@ -661,6 +671,8 @@ module csgrt_event_sort #(
     endgenerate
     csgrt_check_same #(.WIDTH(NHC), .WHAT("hov (the cells' copies of handover_q)")) u_check_hov (
         .clk_i, .rst_ni, .copy_i(hov), .orig_i({NHC{handover_q}}));
+    csgrt_check_same #(.WHAT("in_ready_q (the input stage's ready)")) u_check_in_ready (
+        .clk_i, .rst_ni, .copy_i(in_ready_q), .orig_i(!s1_valid_q || (!fb_q && !s1_split)));
     csgrt_check_same #(.WIDTH(2), .WHAT("fb_q / s1_two_q (the input stage's tests)")) u_check_stage_tests (
         .clk_i, .rst_ni, .copy_i({fb_q, s1_valid_q && s1_two_q}),
         .orig_i({full_q && busy_q, s1_valid_q && s1_n_q == 2'd2}));
