@@ -103,15 +103,19 @@ module csgrt_scene_loader #(
     reg [10*BITS-1:0]     leaf_coef_mem [0:MAX_LEAVES-1];
     reg [TREE_HEIGHT-1:0] leaf_slot_mem [0:MAX_LEAVES-1];
     reg [7:0]             leaf_mat_q    [0:MAX_LEAVES-1];
-    reg [MAT_W-1:0]       mat_mem       [0:MAX_MATERIALS];
+    // a material's record (mat_o) and, above it, its {filter != 0,
+    // reflection != 0} (mat_want_o), tested when it is written: the ray
+    // tree decides a hit's reflected and transmitted children from them.
+    // (The zero tests after the block-RAM read, 5.8 ns clock to output,
+    // were once the routed effects build's critical path. The bits then
+    // had a LUT RAM of their own, 256 entries in 16 banks: its read and
+    // 16-to-1 choice behind the shown material's address became the
+    // critical path of 9f2f1a7's routed build, 88.25 MHz, the walker's
+    // record -> the material address -> the LUT RAM -> mat_want_o. In the
+    // record's block RAM the two bits cost no block: 154 + 2 bits fit the
+    // same five 36-bit columns.)
+    reg [MAT_W+1:0]       mat_mem       [0:MAX_MATERIALS];
     reg [15:0]            ior_mem       [0:MAX_MATERIALS];   // the iors again: two more read ports
-    // {filter != 0, reflection != 0} of each material, tested when it is
-    // written: the ray tree decides a hit's reflected and transmitted
-    // children from them, and the zero tests after mat_mem's block-RAM read
-    // (5.8 ns clock to output) were the routed effects build's critical
-    // path. LUT RAM, whose read is fast and whose read register is a
-    // fabric flip-flop.
-    (* ram_style = "distributed" *) reg [1:0] mat_want_mem [0:MAX_MATERIALS];
 
     // per-section position: item and field counters instead of divisions
     reg [31:0]            item_q;
@@ -355,9 +359,9 @@ module csgrt_scene_loader #(
             if (s2_last_q) loaded_o <= 1'b1;
             if (s2_mat_we_q) begin
                 // the record (its layout: mat_o, above); phong_size is this last word
-                mat_mem[s2_mat_addr_q] <= {mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], s2_w_q[9:0], mat_acc_q[111:0]};
+                mat_mem[s2_mat_addr_q] <= {mat_acc_clear, mat_acc_reflects,
+                                           mat_acc_q[128 +: 16], mat_acc_q[112 +: 16], s2_w_q[9:0], mat_acc_q[111:0]};
                 ior_mem[s2_mat_addr_q] <= mat_acc_q[128 +: 16];
-                mat_want_mem[s2_mat_addr_q] <= {mat_acc_clear, mat_acc_reflects};
                 mat_clear_o[s2_mat_addr_q]  <= mat_acc_clear;
             end
             if (s2_leaf_we_q) begin
@@ -388,8 +392,7 @@ module csgrt_scene_loader #(
         leaf_a_coef_o <= leaf_coef_mem[leaf_a_addr_i];
         leaf_a_slot_o <= leaf_slot_mem[leaf_a_addr_i];
         leaf_b_coef_o <= leaf_coef_mem[leaf_b_addr_i];
-        mat_o         <= mat_mem[mat_addr_i];
-        mat_want_o    <= mat_want_mem[mat_addr_i];
+        {mat_want_o, mat_o} <= mat_mem[mat_addr_i];
         leaf_c_coef_o <= leaf_coef_mem[leaf_c_addr_i];
         ior_a_o       <= (ior_a_addr_i == 8'd0) ? 16'd4096 : ior_mem[ior_a_addr_i];
         ior_b_o       <= (ior_b_addr_i == 8'd0) ? 16'd4096 : ior_mem[ior_b_addr_i];
@@ -397,9 +400,8 @@ module csgrt_scene_loader #(
 
     initial begin
         for (k = 0; k <= MAX_MATERIALS; k = k + 1) begin
-            mat_mem[k] = {MAT_W{1'b0}};
+            mat_mem[k] = {(MAT_W+2){1'b0}};
             ior_mem[k] = 16'd0;
-            mat_want_mem[k] = 2'd0;
         end
     end
     csgrt_check_same #(.WIDTH(HEADER_WORDS), .WHAT("hdr_q (the header word's one-hot index)")) u_check_hdr (
