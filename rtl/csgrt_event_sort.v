@@ -577,17 +577,18 @@ module csgrt_event_sort #(
     wire busy_d = handover || (busy_q && !ray_done_i);
     wire s1_valid_d = in_fire || (s1_valid_q && !s1_done);
     wire s1_two_d   = in_fire ? (ahead0 && keep0 && ahead1 && keep1) : (s1_adv && s1_split) ? 1'b0 : s1_two_q;
+    wire fb_d       = full_d && busy_d;
+    wire handover_d = rst_ni && full_d && !busy_d;   // handover_q's and its copies' (hov) next value
     integer fs, fe;
     always @(posedge clk_i) begin
         // input stage
+        s1_two_q <= s1_two_d;
         if (s1_adv && s1_split) begin   // a is in; b waits for the next clock
-            s1_n_q   <= 2'd1;
-            s1_two_q <= 1'b0;
-            s1_a_q   <= s1_b_q;
+            s1_n_q <= 2'd1;
+            s1_a_q <= s1_b_q;
         end
         if (in_fire) begin
             s1_n_q    <= {1'b0, ahead0 && keep0} + {1'b0, ahead1 && keep1};
-            s1_two_q  <= ahead0 && keep0 && ahead1 && keep1;
             s1_a_q    <= (swap || !ahead0) ? e1 : e0;
             s1_b_q    <= swap ? e0 : e1;
             s1_slo_q  <= onehot_lo(slot_i);
@@ -651,11 +652,11 @@ module csgrt_event_sort #(
             else if (s1_done) s1_valid_q <= 1'b0;
             full_q <= full_d;
             busy_q <= busy_d;
-            fb_q   <= full_d && busy_d;
+            fb_q   <= fb_d;
         end
-        in_ready_q <= !rst_ni || !s1_valid_d || (!(full_d && busy_d) && !((INSERTS == 1) && s1_two_d));
+        in_ready_q <= !rst_ni || !s1_valid_d || (!fb_d && !((INSERTS == 1) && s1_two_d));
         // the next full_q && !busy_q (both as set just above)
-        handover_q <= rst_ni && full_d && !busy_d;
+        handover_q <= handover_d;
     end
     csgrt_check_same #(.WHAT("handover_q")) u_check_handover (
         .clk_i, .rst_ni, .copy_i(handover_q), .orig_i(full_q && !busy_q));
@@ -665,7 +666,7 @@ module csgrt_event_sort #(
     generate
         for (hg = 0; hg < NHC; hg = hg + 1) begin : g_hov
             reg hov_q;
-            (* keep *) always @(posedge clk_i) hov_q <= rst_ni && full_d && !busy_d;
+            (* keep *) always @(posedge clk_i) hov_q <= handover_d;
             assign hov[hg] = hov_q;
         end
     endgenerate

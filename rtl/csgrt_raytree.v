@@ -482,6 +482,9 @@ module csgrt_raytree #(
     wire ev0_ch  = !ct_valid && ch_valid_ev_i;
     wire ev0_hp  = !ct_valid && !ch_valid_ev_i && hp_valid;
     wire ev0_pop = !ct_valid && !ch_valid_ev_i && !hp_valid && pop_staged_q;
+    // E0's shadow ray that ends (its light colour written, its pending
+    // count stepped down, its context maybe set to shade)
+    wire ev0_sh_end = ev0_hp && h_shadow && hp_sh_ends;
     wire ev0_cam = !ct_valid && !ch_valid_ev_i && !hp_valid && !pop_staged_q && cam_valid_i && free_any && room_out_q
                    && !start_i && !ev_cam;
     always @(posedge clk_i)
@@ -687,7 +690,7 @@ module csgrt_raytree #(
         else begin
             shade_ch_any <= ev0_ch && ch_last_i && !(ch_kind_i == K_SHADOW && ch_lit_i);
             shade_hc     <= ev0_hp && !h_shadow && h_colour_hit && !want_spawn;
-            shade_sh_any <= ev0_hp && h_shadow && hp_sh_ends;
+            shade_sh_any <= ev0_sh_end;
         end
 
     // ---- state updates ---------------------------------------------------------------------
@@ -996,7 +999,7 @@ module csgrt_raytree #(
         end else begin
             sp_op_q   <= (ev0_ch && stacked(ch_kind_i)) ? C_INC : ev0_pop ? C_DEC : ev0_cam ? C_CLEAR : C_KEEP;
             pend_op_q <= (ev0_ch && ch_kind_i == K_SHADOW && ch_lit_i) ? C_INC
-                       : (ev0_hp && h_shadow && hp_sh_ends) ? C_DEC
+                       : ev0_sh_end ? C_DEC
                        : (ev0_hp && !h_shadow && h_colour_hit) ? C_CLEAR : C_KEEP;
         end
         sp_ctx_q   <= ch_valid_i ? ch_user_i : pop_staged_q ? pop_ctx_q : free_ctx;
@@ -1045,7 +1048,7 @@ module csgrt_raytree #(
     reg [CB+KW-1:0] lcol_addr_q;
     reg [47:0]   lcol_data_q;
     always @(posedge clk_i) begin
-        lcol_we_q   <= rst_ni && ((ev0_ch && ch_kind_i == K_SHADOW && !ch_lit_i) || (ev0_hp && h_shadow && hp_sh_ends));
+        lcol_we_q   <= rst_ni && ((ev0_ch && ch_kind_i == K_SHADOW && !ch_lit_i) || ev0_sh_end);
         lcol_addr_q <= ch_valid_i ? {ch_user_i, ch_light_i} : {h_ctx, h_light};
         lcol_data_q <= ch_valid_i ? 48'd0 : hp_sh_color;
         if (lcol_we_q) lcol_q[lcol_addr_q] <= lcol_data_q;
