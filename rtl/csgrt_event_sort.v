@@ -289,6 +289,7 @@ module csgrt_event_sort #(
     reg  in_ready_q;
     wire in_ready = in_ready_q;
     wire flag_in;                          // the slot's origin flag
+    wire info_ok;                          // the ray's info is there (secondary rays; else 1)
     // look-behind fix-up (SECONDARY), applied with the ray's handover: entry
     // e sets the flag of its slot to !fix_ent[e] iff fix_lo's and fix_hi's
     // one-hot halves of entry e both select the slot (see g_sec)
@@ -460,6 +461,7 @@ module csgrt_event_sort #(
         if (SECONDARY != 0) begin : g_sec
             wire sec = info_secondary_i;
             wire lim = info_tlimit_i != {UW{1'b0}};
+            assign info_ok      = info_valid_i;
             assign ready_o      = in_ready && info_valid_i;
             assign info_ready_o = valid_i && ready_o && last_i;   // popped with the last leaf
             assign keep0   = !sec || !lim || t0_i[UW-1:0] < info_tlimit_i;
@@ -557,6 +559,7 @@ module csgrt_event_sort #(
             assign fix_hi  = s2_hi_q;
             assign fix_ent = s2_ent_q;
         end else begin : g_pri
+            assign info_ok      = 1'b1;
             assign ready_o      = in_ready;
             assign info_ready_o = 1'b0;
             assign keep0   = 1'b1;
@@ -579,6 +582,42 @@ module csgrt_event_sort #(
     wire s1_two_d   = in_fire ? (ahead0 && keep0 && ahead1 && keep1) : (s1_adv && s1_split) ? 1'b0 : s1_two_q;
     wire fb_d       = full_d && busy_d;
     wire handover_d = rst_ni && full_d && !busy_d;   // handover_q's and its copies' (hov) next value
+    // in_ready_q's next value, from private copies of the state it reads
+    // (rc_*, each loaded as its original, in an always block of its own
+    // under (* keep *) so that yosys does not merge them back). From the
+    // originals it shared s1_adv (79 loads) and s1_done && s1_last_q (54
+    // loads) with the fill bank: three nets of high fan-out in a row,
+    // tools/logic_depth.py's longest path on 03fd3dc's netlist (11.64 ns:
+    // fb_q -> s1_adv -> full_d -> fb_d -> in_ready_q). The same terms
+    // written again on the copies have one load each. A check compares the
+    // copies with the originals (s1_two_q and s1_last_q while the stage
+    // holds a leaf: they are loaded before that) and u_check_in_ready the
+    // ready with its definition.
+    reg rc_valid_q, rc_fb_q, rc_two_q, rc_last_q, rc_full_q, rc_busy_q, rc_hov_q, rc_ready_q;
+    wire rc_fire   = valid_i && rc_ready_q && info_ok;
+    wire rc_adv    = rc_valid_q && !rc_fb_q;
+    wire rc_done   = rc_adv && !((INSERTS == 1) && rc_two_q);
+    wire rc_full_d = (rc_done && rc_last_q) || (rc_full_q && !rc_hov_q);
+    wire rc_busy_d = rc_hov_q || (rc_busy_q && !ray_done_i);
+    wire rc_valid_d = rc_fire || (rc_valid_q && !rc_done);
+    wire rc_two_d  = rc_fire ? (ahead0 && keep0 && ahead1 && keep1) : rc_two_q && !rc_adv;
+    wire in_ready_d = !rst_ni || !rc_valid_d || (!(rc_full_d && rc_busy_d) && !((INSERTS == 1) && rc_two_d));
+    (* keep *) always @(posedge clk_i) begin
+        rc_valid_q <= rst_ni && s1_valid_d;
+        rc_fb_q    <= rst_ni && fb_d;
+        rc_two_q   <= s1_two_d;
+        if (in_fire) rc_last_q <= last_i;
+        rc_full_q  <= rst_ni && full_d;
+        rc_busy_q  <= rst_ni && busy_d;
+        rc_hov_q   <= handover_d;
+        rc_ready_q <= in_ready_d;
+    end
+    csgrt_check_same #(.WIDTH(8), .WHAT("rc_* (the ready's copies of the input stage's state)")) u_check_rc (
+        .clk_i, .rst_ni,
+        .copy_i({rc_valid_q, rc_fb_q, s1_valid_q && rc_two_q, s1_valid_q && rc_last_q,
+                 rc_full_q, rc_busy_q, rc_hov_q, rc_ready_q}),
+        .orig_i({s1_valid_q, fb_q, s1_valid_q && s1_two_q, s1_valid_q && s1_last_q,
+                 full_q, busy_q, handover_q, in_ready_q}));
     integer fs, fe;
     always @(posedge clk_i) begin
         // input stage
@@ -654,7 +693,7 @@ module csgrt_event_sort #(
             busy_q <= busy_d;
             fb_q   <= fb_d;
         end
-        in_ready_q <= !rst_ni || !s1_valid_d || (!fb_d && !((INSERTS == 1) && s1_two_d));
+        in_ready_q <= in_ready_d;
         // the next full_q && !busy_q (both as set just above)
         handover_q <= handover_d;
     end
