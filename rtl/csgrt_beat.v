@@ -52,10 +52,22 @@ module csgrt_beat #(
                 else if (ce_i) phase_q <= (phase_q == 2'd2) ? 2'd0 : phase_q + 2'd1;
             end
             assign phase_o = phase_q;
-            assign last_o  = (phase_q == 2'd2);
+            // last_o from a register of its own (last_q, loaded with the
+            // test of the phase's next value, which adv_d shares): the
+            // phase steers every shared multiplier's operands (260 loads
+            // in csgrt_hit_prep), and the handshake's push (valid && last)
+            // read it through that net, on its way into the output buffer's
+            // ready and this beat's adv_q (tools/logic_depth.py's second
+            // path on 03fd3dc's netlist, 11.54 ns). (* keep *): see below.
+            reg  last_q;
+            wire last_d = rst_ni && (ce_i ? phase_q == 2'd1 : phase_q == 2'd2);
+            (* keep *) always @(posedge clk_i) last_q <= last_d;
+            assign last_o  = last_q;
+            csgrt_check_same #(.WHAT("last_o (csgrt_beat's last_q)")) u_check_last (
+                .clk_i, .rst_ni, .copy_i(last_q), .orig_i(phase_q == 2'd2));
             // adv's next value: the phase after the edge is 2 (a reset makes
             // it 0, a running clock moves 1 to 2, a stalled one keeps 2)
-            wire adv_d = ce_next_i && rst_ni && (ce_i ? phase_q == 2'd1 : phase_q == 2'd2);
+            wire adv_d = ce_next_i && last_d;
             // adv_o from a register too (adv_en_q): ce_i && last_o is a LUT
             // behind the phase register, which also steers every shared
             // multiplier's operands, and every register of the pipeline
