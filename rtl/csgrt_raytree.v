@@ -813,7 +813,22 @@ module csgrt_raytree #(
         .clk_i, .rst_ni, .copy_i(hpm_q), .orig_i(ev_hp && !e_h_shadow && !e_h_colour_hit));
 `endif
     wire           hp_ends = hpm_q && !hpp_more_q;   // a miss ends its pixel
-    wire           ob_we   = ev_ct ? !ctp_more_q : hp_ends;
+    // The output buffer's write enable is a register too (ob_we_q), loaded
+    // in E0 with the same reads that load ctp_more_q, hpm_q and hpp_more_q:
+    // as a decode of those and ev_ct (111 loads) it was three LUT levels in
+    // front of the buffer's distributed-RAM write enables (tools/
+    // logic_depth.py 11.16 ns on 03fd3dc's netlist). A simulation check
+    // compares it with the decode.
+    reg            ob_we_q;
+    always @(posedge clk_i)
+        if (!rst_ni) ob_we_q <= 1'b0;
+        else         ob_we_q <= ev0_ct ? sp_q[ct_ctx] == {SPW{1'b0}}
+                                       : ev0_hp && !h_shadow && !h_colour_hit && sp_q[h_ctx] == {SPW{1'b0}};
+    wire           ob_we   = ob_we_q;
+`ifndef SYNTHESIS
+    csgrt_check_same #(.WHAT("ob_we_q (the output buffer's write)")) u_check_ob_we (
+        .clk_i, .rst_ni, .copy_i(ob_we_q), .orig_i(ev_ct ? !ctp_more_q : hp_ends));
+`endif
     wire [OBW-1:0] ob_slot = ev_ct ? ctp_slot_q : hpp_slot_q;
     // The valid bits: set at the slot written, cleared at the retire
     // pointer's slot when the pixel leaves (out_take), the clear last. Per
