@@ -220,7 +220,7 @@ synth: deps
 	    $(if $(TREE_HEIGHT),--tree-height $(TREE_HEIGHT)) \
 	    --freq $(FREQ) --baud $(BAUD) $(SYNTH_FLAGS)
 
-# Out-of-context timing (a benchmark, not a test; docs/fpga.md "Timing per
+# Out-of-context timing (a benchmark, not a test; docs/fpga-timing.md "Timing per
 # module"): each module of csgrt_top's configuration placed and routed alone
 # on the 85F, its Fmax and critical path with the RTL lines, minutes per
 # module instead of hours for the whole design.
@@ -232,7 +232,7 @@ timing-modules: deps
 	    --effects $(if $(filter scene,$(EFFECTS)),shadows$(comma)reflection,$(EFFECTS)) \
 	    --tree-height $(or $(TREE_HEIGHT),7) --lut-tile-max $(or $(LUT_TILE_MAX),81) --freq $(FREQ)
 
-# Whole-design paths without place and route (docs/fpga.md "Whole-design
+# Whole-design paths without place and route (docs/fpga-timing.md "Whole-design
 # paths"): the longest register-to-register paths, across modules too, and
 # the largest fan-outs of make synth's netlist (yosys JSON), by a fixed
 # delay per cell and net. `make logic-depth [NETLIST=out/synth/csgrt.json]`

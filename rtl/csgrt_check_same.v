@@ -3,7 +3,7 @@
 // another signal equals it on every clock, from the first reset on (the
 // registers start undefined before it). Units keep such copies to take a
 // decision off a net of thousands of loads, or a compare off a path
-// (csgrt_beat's adv_q_o, csgrt_fifo_ptrs' flags, docs/fpga.md "Whole-design
+// (csgrt_beat's adv_q_o, csgrt_fifo_ptrs' flags, docs/fpga-timing.md "Whole-design
 // paths"); the copy is loaded with the original's next value, and this
 // check stops the simulation if that ever goes wrong. Synthesis builds
 // nothing (SYNTHESIS is defined by yosys and tools/synth.sh).

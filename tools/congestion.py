@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """congestion.py — where nextpnr's router2 finds too few wires, by unit and by
-band of the die (docs/fpga.md "Why it does not route").
+band of the die (docs/fpga-timing.md "Why it does not route").
 
 nextpnr-ecp5 --router router2 --router2-heatmap PREFIX writes, per router
 iteration N, PREFIX_congestion_by_net_N.csv (net name, overused wires of

@@ -42,7 +42,7 @@
 # the script refuses others.
 # --heatmap (with --router router2) has nextpnr write its congestion heatmaps
 # per router iteration into OUT/heat; tools/congestion.py OUT/heat/h sums them
-# by unit and by band of tile rows (docs/fpga.md "Why it does not route").
+# by unit and by band of tile rows (docs/fpga-timing.md "Why it does not route").
 # --alt-weights (with --router router2): nextpnr's --router2-alt-weights,
 # router2's alternative cost weights.
 # --seed N: nextpnr's random seed (default 1, as every run in docs/fpga.md
