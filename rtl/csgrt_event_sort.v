@@ -583,23 +583,25 @@ module csgrt_event_sort #(
     wire fb_d       = full_d && busy_d;
     // in_ready_q's next value, from private copies of the state it reads
     // (rc_*, each loaded as its original, in an always block of its own
-    // under (* keep *) so that yosys does not merge them back). From the
-    // originals it shared s1_adv (79 loads) and s1_done && s1_last_q (54
-    // loads) with the fill bank: three nets of high fan-out in a row,
-    // tools/logic_depth.py's longest path on 03fd3dc's netlist (11.64 ns:
-    // fb_q -> s1_adv -> full_d -> fb_d -> in_ready_q). The same terms
-    // written again on the copies have one load each. A check compares the
-    // copies with the originals (s1_two_q and s1_last_q while the stage
-    // holds a leaf: they are loaded before that) and u_check_in_ready the
+    // under (* keep *)). From the originals it shared s1_adv (79 loads) and
+    // s1_done && s1_last_q (54 loads) with the fill bank: three nets of
+    // high fan-out in a row, tools/logic_depth.py's longest path on
+    // 03fd3dc's netlist (11.64 ns: fb_q -> s1_adv -> full_d -> fb_d ->
+    // in_ready_q). The same terms written again on the copies have one load
+    // each. s1_two_q, s1_last_q and handover_q are read as they are: copies
+    // of them have the same next value in the same form, and yosys merges
+    // such a pair into one flip-flop whatever the (* keep *) (opt_merge
+    // keeps the kept one and moves the other's loads onto it). A check
+    // compares the copies with the originals, and u_check_in_ready the
     // ready with its definition.
-    reg rc_valid_q, rc_fb_q, rc_two_q, rc_last_q, rc_full_q, rc_busy_q, rc_hov_q, rc_ready_q;
+    reg rc_valid_q, rc_fb_q, rc_full_q, rc_busy_q, rc_ready_q;
     wire rc_fire   = valid_i && rc_ready_q && info_ok;
     wire rc_adv    = rc_valid_q && !rc_fb_q;
-    wire rc_done   = rc_adv && !((INSERTS == 1) && rc_two_q);
-    wire rc_full_d = (rc_done && rc_last_q) || (rc_full_q && !rc_hov_q);
-    wire rc_busy_d = rc_hov_q || (rc_busy_q && !ray_done_i);
+    wire rc_done   = rc_adv && !((INSERTS == 1) && s1_two_q);
+    wire rc_full_d = (rc_done && s1_last_q) || (rc_full_q && !handover_q);
+    wire rc_busy_d = handover_q || (rc_busy_q && !ray_done_i);
     wire rc_valid_d = rc_fire || (rc_valid_q && !rc_done);
-    wire rc_two_d  = rc_fire ? (ahead0 && keep0 && ahead1 && keep1) : rc_two_q && !rc_adv;
+    wire rc_two_d  = rc_fire ? (ahead0 && keep0 && ahead1 && keep1) : s1_two_q && !rc_adv;
     wire in_ready_d = !rst_ni || !rc_valid_d || (!(rc_full_d && rc_busy_d) && !((INSERTS == 1) && rc_two_d));
     // handover_q's and its copies' (hov) next value, full_q && !busy_q after
     // the edge, from the copies too: from full_d and busy_d it took the same
@@ -609,19 +611,14 @@ module csgrt_event_sort #(
     (* keep *) always @(posedge clk_i) begin
         rc_valid_q <= rst_ni && s1_valid_d;
         rc_fb_q    <= rst_ni && fb_d;
-        rc_two_q   <= s1_two_d;
-        if (in_fire) rc_last_q <= last_i;
         rc_full_q  <= rst_ni && full_d;
         rc_busy_q  <= rst_ni && busy_d;
-        rc_hov_q   <= handover_d;
         rc_ready_q <= in_ready_d;
     end
-    csgrt_check_same #(.WIDTH(8), .WHAT("rc_* (the ready's copies of the input stage's state)")) u_check_rc (
+    csgrt_check_same #(.WIDTH(5), .WHAT("rc_* (the ready's copies of the input stage's state)")) u_check_rc (
         .clk_i, .rst_ni,
-        .copy_i({rc_valid_q, rc_fb_q, s1_valid_q && rc_two_q, s1_valid_q && rc_last_q,
-                 rc_full_q, rc_busy_q, rc_hov_q, rc_ready_q}),
-        .orig_i({s1_valid_q, fb_q, s1_valid_q && s1_two_q, s1_valid_q && s1_last_q,
-                 full_q, busy_q, handover_q, in_ready_q}));
+        .copy_i({rc_valid_q, rc_fb_q, rc_full_q, rc_busy_q, rc_ready_q}),
+        .orig_i({s1_valid_q, fb_q, full_q, busy_q, in_ready_q}));
     integer fs, fe;
     always @(posedge clk_i) begin
         // input stage
