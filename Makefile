@@ -60,7 +60,7 @@ help:
 	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [CONTEXTS=8] [MAX_LIGHTS=8] [TREE_HEIGHT=8] [WIDTH=..] [HEIGHT=..]"
 	@echo "             run the RTL in Verilator; writes out/sim/<scene>.png and compares with the model"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
-	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [CONTEXTS=16] [MAX_LIGHTS=4] [LUT_TILE_MAX=81] [TREE_HEIGHT=7] [FREQ=100] [BAUD=3000000]"
+	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [ISECT_II=3] [CONTEXTS=16] [MAX_LIGHTS=4] [LUT_TILE_MAX=81] [TREE_HEIGHT=7] [FREQ=100] [BAUD=3000000]"
 	@echo "             ULX3S bitstream (yosys, nextpnr-ecp5, ecppack) to out/synth/; docs/fpga.md"
 	@echo "make timing-modules [MODULES=\"csgrt_walker ...\"] [BITS=24] [EFFECTS=shadows,reflection]"
 	@echo "             each module placed and routed alone on the 85F: Fmax and critical path (docs/fpga.md)"
@@ -128,7 +128,7 @@ endef
 # frame16fxu2 is also built for two lights (MAX_LIGHTS=2; the others: 8):
 # the three-light scene is refused there (status 4)
 FRAME_BINS := $(BUILD)/tb/frame16 $(BUILD)/tb/frame24 $(BUILD)/tb/frame24u2 \
-              $(BUILD)/tb/frame16fx $(BUILD)/tb/frame24fx $(BUILD)/tb/frame16fxu2
+              $(BUILD)/tb/frame16fx $(BUILD)/tb/frame24fx $(BUILD)/tb/frame16fxu2 $(BUILD)/tb/frame24fxi3
 FRAME_DEPS := $(RTL_SRC) tb/frame/tb_frame.cpp $(wildcard sim/*.h) $(BUILD)/libcsgrt.a
 $(BUILD)/tb/frame%: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,$*,tb/frame/tb_frame.cpp,-DFRAME_BITS=$* -DFRAME_UNITS=1,-lgtest -lgtest_main,1)
@@ -142,6 +142,10 @@ $(BUILD)/tb/frame16fx: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS) -GCONTEXTS=16)
 $(BUILD)/tb/frame24fx: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS))
+# frame24fx's configuration with the time-shared intersection unit
+# (ISECT_II=3: a pair every three clocks on a third of its multipliers)
+$(BUILD)/tb/frame24fxi3: $(FRAME_DEPS) | deps
+	$(call VERILATE_TOP,$@,24,tb/frame/tb_frame.cpp,-DFRAME_BITS=24 $(FX_DEFS),-lgtest -lgtest_main,1,$(FX_UNITS) -GISECT_II=3)
 # shadows and reflection with two intersection lanes (refraction needs one lane)
 $(BUILD)/tb/frame16fxu2: $(FRAME_DEPS) | deps
 	$(call VERILATE_TOP,$@,16,tb/frame/tb_frame.cpp,-DFRAME_BITS=16 -DFRAME_UNITS=2 -DFRAME_SHADOWS=1 -DFRAME_REFLECTION=1 -DFRAME_REFRACTION=0 -DFRAME_SPECULAR=0 -DFRAME_MAX_LIGHTS=2,-lgtest -lgtest_main,2,-GSHADOWS=1 -GREFLECTION=1 -GSPECULAR=0 -GSHARE_II=1 -GMAX_LIGHTS=2)
@@ -165,6 +169,10 @@ SORT_INSERTS ?= 1
 # leaves, up to a third fewer where the ray tree's contexts bound the rate;
 # docs/architecture.md "Contexts"); a build with 1 gets the suffix ii1
 SHARE_II ?= 3
+# the intersection unit's clocks per ray-primitive pair (csgrt_top ISECT_II:
+# 1, or 3 on a third of its multipliers, for the FPGA's routing; 1.5 to 3
+# times the cycles on the effect scenes); a build with 3 gets the suffix x3
+ISECT_II ?= 1
 # pixels in flight in the ray tree (csgrt_top CONTEXTS, a power of two):
 # with few leaves per scene the contexts, not the intersection unit, bound
 # the rate (docs/architecture.md "Contexts"); a build with another number
@@ -181,11 +189,11 @@ endif
 # TRACE=1 builds a binary of its own with waveform tracing (suffix t): a
 # build Verilated with --trace-fst runs about 15 % slower even when it
 # writes no waveform (quadrics 64x48 B24: 1.13 s against 1.01 s, median of 5)
-SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHARE_II)),ii1,)$(if $(filter-out 8,$(CONTEXTS)),c$(CONTEXTS),)$(if $(filter-out 8,$(MAX_LIGHTS)),l$(MAX_LIGHTS),)$(if $(filter-out 8,$(HW_TREE_HEIGHT)),h$(HW_TREE_HEIGHT),)$(if $(TRACE),t,)
+SIM_FX  = s$(SHADOWS)r$(REFLECTION)f$(REFRACTION)p$(SPECULAR)$(if $(filter 2,$(SORT_INSERTS)),i2,)$(if $(filter 1,$(SHARE_II)),ii1,)$(if $(filter 3,$(ISECT_II)),x3,)$(if $(filter-out 8,$(CONTEXTS)),c$(CONTEXTS),)$(if $(filter-out 8,$(MAX_LIGHTS)),l$(MAX_LIGHTS),)$(if $(filter-out 8,$(HW_TREE_HEIGHT)),h$(HW_TREE_HEIGHT),)$(if $(TRACE),t,)
 SIM_BIN = $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim
 SIM_OUT = out/sim/$(scene_name)
 $(BUILD)/sim/b$(BITS)u$(UNITS)$(SIM_FX)/csgrt_sim: $(RTL_SRC) $(wildcard sim/*.cpp sim/*.h) $(BUILD)/libcsgrt.a | deps
-	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION) -DCSGRT_SPECULAR=$(SPECULAR) -DCSGRT_CONTEXTS=$(CONTEXTS),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION) -GSPECULAR=$(SPECULAR) -GSORT_INSERTS=$(SORT_INSERTS) -GSHARE_II=$(SHARE_II) -GCONTEXTS=$(CONTEXTS) -GMAX_LIGHTS=$(MAX_LIGHTS),$(if $(TRACE),--trace-fst))
+	$(call VERILATE_TOP,$@,$(BITS),sim/sim_main.cpp,-DCSGRT_LEAF_BITS=$(HW_LEAF_BITS) -DCSGRT_TREE_HEIGHT=$(HW_TREE_HEIGHT) -DCSGRT_NUM_UNITS=$(UNITS) -DCSGRT_SHADOWS=$(SHADOWS) -DCSGRT_REFLECTION=$(REFLECTION) -DCSGRT_REFRACTION=$(REFRACTION) -DCSGRT_SPECULAR=$(SPECULAR) -DCSGRT_CONTEXTS=$(CONTEXTS),,$(UNITS),-GSHADOWS=$(SHADOWS) -GREFLECTION=$(REFLECTION) -GREFRACTION=$(REFRACTION) -GSPECULAR=$(SPECULAR) -GSORT_INSERTS=$(SORT_INSERTS) -GSHARE_II=$(SHARE_II) -GISECT_II=$(ISECT_II) -GCONTEXTS=$(CONTEXTS) -GMAX_LIGHTS=$(MAX_LIGHTS),$(if $(TRACE),--trace-fst))
 
 sim: model
 	@units="$(if $(filter all,$(EFFECTS)),SHADOWS=1 REFLECTION=1 REFRACTION=1 SPECULAR=1,$(if $(filter none,$(EFFECTS)),SHADOWS=0 REFLECTION=0 REFRACTION=0 SPECULAR=1,$$($(BUILD)/csgrt units $(SCENE))))" \
@@ -213,6 +221,7 @@ synth: deps
 	@tools/synth.sh --bits $(BITS) --effects $(if $(filter scene,$(EFFECTS)),none,$(EFFECTS)) \
 	    $(if $(filter 0,$(SPECULAR)),--no-specular) $(if $(filter 2,$(SORT_INSERTS)),--sort-inserts 2) \
 	    $(if $(filter 1,$(SHARE_II)),--share-ii 1) \
+	    $(if $(filter 3,$(ISECT_II)),--isect-ii 3) \
 	    $(if $(filter-out 1,$(UNITS)),--units $(UNITS)) \
 	    $(if $(filter-out 8,$(CONTEXTS)),--contexts $(CONTEXTS)) \
 	    $(if $(filter-out 8,$(MAX_LIGHTS)),--max-lights $(MAX_LIGHTS)) \

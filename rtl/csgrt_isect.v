@@ -45,6 +45,20 @@
 //   skid    (1)  csgrt_skid
 // Latency: 2F+23 clocks without back-pressure (BITS 12: 41, 16: 49, 24: 65,
 // 32: 81). Throughput: one ray-primitive pair per clock.
+//
+// II = 3 (time-shared, csgrt_beat): every stage moves once every three
+// running clocks (a beat), and each multiplier serves three products in
+// turn (csgrt_mul_vec): P0's 18 products on 6 multipliers (row i of A
+// times d, row i times o), P2's 9 on 3 (d.u, d.w, o.(w + rnd(p))), P4's
+// two on one (b*b and a*c, operands sign-extended to BW x CW bits; both
+// products are exact in it). 10 multipliers where II = 1 has 29: at
+// BITS 24 about a third of the MULT18X18D blocks and of their operand
+// wiring, the routing congestion of the 24-bit builds (docs/fpga.md).
+// The arithmetic is the same, so are the results, bit for bit. An input
+// register holds the pair for the beat in which P0 reads it, and P0, P2,
+// P4 take two beats (csgrt_mul_vec): latency 3 (2F+20) + 1 clocks
+// without back-pressure (BITS 16: 139, 24: 187; tb/isect checks it);
+// throughput one pair per three clocks.
 // Handshake: valid/ready on both sides, a transaction moves when valid and
 // ready are both high at a rising edge. All stages advance on one global
 // enable, the output skid buffer's registered ready, which is also ready_o:
@@ -52,7 +66,8 @@
 // sideband carried alongside unchanged.
 module csgrt_isect #(
     parameter BITS       = 24,   // coordinate / direction / coefficient width B (12..32)
-    parameter LEAF_WIDTH = 10    // sideband (leaf index) width (>= 1)
+    parameter LEAF_WIDTH = 10,   // sideband (leaf index) width (>= 1)
+    parameter II         = 1     // clocks per pair: 1, or 3 (a third of the multipliers, above)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_ni,     // synchronous, active low
@@ -105,16 +120,32 @@ module csgrt_isect #(
 
     localparam [1:0] R_NEGINF = 2'd0, R_FINITE = 2'd1, R_POSINF = 2'd2;
 
-    wire en;   // global stage enable: the output skid buffer's ready
-    // ready_o is en again, from a register of its own (loaded with the
-    // skid's next ready): en is the enable of every stage (about 7,000
-    // flip-flops), and the dispatcher's issue logic read that net
-    // (tools/logic_depth.py); a simulation stops if the two differ
-    wire en_next;
-    reg  ready_q;
-    always @(posedge clk_i) ready_q <= en_next;
-    assign ready_o = ready_q;
-    csgrt_check_same #(.WHAT("ready_q")) u_check_ready (.clk_i, .rst_ni, .copy_i(ready_q), .orig_i(en));
+    wire en;        // the pipeline runs: the output skid buffer's ready
+    wire en_next;   // en after the next rising edge (csgrt_skid's ready_next_o)
+    // Every stage moves on the beat's advance adv (II = 1: adv = en, every
+    // running clock; II = 3: every third); the shared multipliers run on
+    // every running clock. An item leaves for the skid only at an advance.
+    wire [1:0] phase;
+    wire       last, adv, adv_q;
+    csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .ce_next_i(en_next),
+                                  .phase_o(phase), .last_o(last), .adv_o(adv), .adv_q_o(adv_q));
+    // ready_o is adv again, from a register of its own (csgrt_beat's
+    // adv_q, loaded with the advance's next value): adv is the enable of
+    // every stage (about 7,000 flip-flops), and the dispatcher's issue
+    // logic read that net (tools/logic_depth.py); csgrt_beat stops a
+    // simulation if the two differ
+    assign ready_o = adv_q;
+    localparam MUL_LAT = (II == 1) ? 3 : 2;   // a product stage, in advances (csgrt_mul OUT_REG / csgrt_mul_vec)
+
+    // ---- input: II = 3 registers the pair, which P0's shared multipliers
+    // read for a whole beat (II = 1: straight through) ----------------------
+    wire             in_valid;
+    wire [3*B-1:0]   in_o, in_d;
+    wire [10*B-1:0]  in_coef;
+    wire [LW-1:0]    in_leaf;
+    csgrt_delay #(.WIDTH(16 * B + LW), .STAGES(II == 1 ? 0 : 1)) u_in (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(valid_i),
+        .data_i({leaf_i, coef_i, d_i, o_i}), .valid_o(in_valid), .data_o({in_leaf, in_coef, in_d, in_o}));
 
     // ---- P0: A d and A o ---------------------------------------------------
     // Every multiplier of the unit (P0, P2, P4) hands its product over
@@ -129,18 +160,37 @@ module csgrt_isect #(
     wire [9*2*B-1:0] pu, pw;   // products (3i+j), 2B bits each
     genvar i, j;
     generate
-        for (i = 0; i < 3; i = i + 1) begin : g_p0_row
-            for (j = 0; j < 3; j = j + 1) begin : g_p0_col
-                localparam CI = (i == j) ? i : (i + j == 1) ? 3 : (i + j == 2) ? 4 : 5;
-                wire unused_vu, unused_vw;
-                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1)) u_mul_u (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(valid_i),
-                    .a_i(coef_i[CI*B +: B]), .b_i(d_i[j*B +: B]),
-                    .valid_o(unused_vu), .p_o(pu[(3*i+j)*2*B +: 2*B]));
-                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1)) u_mul_w (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(valid_i),
-                    .a_i(coef_i[CI*B +: B]), .b_i(o_i[j*B +: B]),
-                    .valid_o(unused_vw), .p_o(pw[(3*i+j)*2*B +: 2*B]));
+        if (II == 1) begin : g_p0_each
+            wire unused_phase = ^phase;   // always 0 (csgrt_beat)
+            for (i = 0; i < 3; i = i + 1) begin : g_p0_row
+                for (j = 0; j < 3; j = j + 1) begin : g_p0_col
+                    localparam CI = (i == j) ? i : (i + j == 1) ? 3 : (i + j == 2) ? 4 : 5;
+                    wire unused_vu, unused_vw;
+                    csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1)) u_mul_u (
+                        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(in_valid),
+                        .a_i(in_coef[CI*B +: B]), .b_i(in_d[j*B +: B]),
+                        .valid_o(unused_vu), .p_o(pu[(3*i+j)*2*B +: 2*B]));
+                    csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1)) u_mul_w (
+                        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(in_valid),
+                        .a_i(in_coef[CI*B +: B]), .b_i(in_o[j*B +: B]),
+                        .valid_o(unused_vw), .p_o(pw[(3*i+j)*2*B +: 2*B]));
+                end
+            end
+        end else begin : g_p0_shared
+            // row i of A times d and times o, one multiplier each; the
+            // beat's gather register is the fabric register OUT_REG gives
+            // the II = 1 products
+            for (i = 0; i < 3; i = i + 1) begin : g_p0_row
+                localparam C0 = (i == 0) ? 0 : (i == 1) ? 3 : 4;   // A(i,0)
+                localparam C1 = (i == 1) ? 1 : (i == 0) ? 3 : 5;   // A(i,1)
+                localparam C2 = (i == 2) ? 2 : (i == 0) ? 4 : 5;   // A(i,2)
+                wire [3*B-1:0] row = {in_coef[C2*B +: B], in_coef[C1*B +: B], in_coef[C0*B +: B]};
+                csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(B), .N(3), .II(II)) u_mul_u (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
+                    .a_i(row), .b_i(in_d), .p_o(pu[3*i*2*B +: 3*2*B]));
+                csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(B), .N(3), .II(II)) u_mul_w (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
+                    .a_i(row), .b_i(in_o), .p_o(pw[3*i*2*B +: 3*2*B]));
             end
         end
     endgenerate
@@ -149,9 +199,9 @@ module csgrt_isect #(
     localparam SD0W = 3 * B + 3 * B + 3 * B + B + LW;
     wire            p0_valid;
     wire [SD0W-1:0] p0_side;
-    csgrt_delay #(.WIDTH(SD0W), .STAGES(3)) u_dly0 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(valid_i),
-        .data_i({leaf_i, coef_i[9*B +: B], coef_i[6*B +: 3*B], d_i, o_i}),
+    csgrt_delay #(.WIDTH(SD0W), .STAGES(MUL_LAT)) u_dly0 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(in_valid),
+        .data_i({in_leaf, in_coef[9*B +: B], in_coef[6*B +: 3*B], in_d, in_o}),
         .valid_o(p0_valid), .data_o(p0_side));
     wire [3*B-1:0] p0_o    = p0_side[0 +: 3*B];
     wire [3*B-1:0] p0_d    = p0_side[3*B +: 3*B];
@@ -210,8 +260,8 @@ module csgrt_isect #(
     reg [LW-1:0]   p1_leaf_q;
     always @(posedge clk_i) begin
         if (!rst_ni) p1_valid_q <= 1'b0;
-        else if (en) p1_valid_q <= p0_valid;
-        if (en) begin
+        else if (adv) p1_valid_q <= p0_valid;
+        if (adv) begin
             p1_u_q    <= u_d;
             p1_w_q    <= w_d;
             p1_wp_q   <= wp_d;
@@ -226,27 +276,40 @@ module csgrt_isect #(
     wire [3*(B+UW)-1:0]  pa, pb;
     wire [3*(B+WPW)-1:0] pc;
     generate
-        for (i = 0; i < 3; i = i + 1) begin : g_p2
-            wire unused_va, unused_vb, unused_vc;
-            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1)) u_mul_a (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p1_valid_q),
-                .a_i(p1_d_q[i*B +: B]), .b_i(p1_u_q[i*UW +: UW]),
-                .valid_o(unused_va), .p_o(pa[i*(B+UW) +: B+UW]));
-            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1)) u_mul_b (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p1_valid_q),
-                .a_i(p1_d_q[i*B +: B]), .b_i(p1_w_q[i*UW +: UW]),
-                .valid_o(unused_vb), .p_o(pb[i*(B+UW) +: B+UW]));
-            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(WPW), .OUT_REG(1)) u_mul_c (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p1_valid_q),
-                .a_i(p1_o_q[i*B +: B]), .b_i(p1_wp_q[i*WPW +: WPW]),
-                .valid_o(unused_vc), .p_o(pc[i*(B+WPW) +: B+WPW]));
+        if (II == 1) begin : g_p2_each
+            for (i = 0; i < 3; i = i + 1) begin : g_p2
+                wire unused_va, unused_vb, unused_vc;
+                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1)) u_mul_a (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p1_valid_q),
+                    .a_i(p1_d_q[i*B +: B]), .b_i(p1_u_q[i*UW +: UW]),
+                    .valid_o(unused_va), .p_o(pa[i*(B+UW) +: B+UW]));
+                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1)) u_mul_b (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p1_valid_q),
+                    .a_i(p1_d_q[i*B +: B]), .b_i(p1_w_q[i*UW +: UW]),
+                    .valid_o(unused_vb), .p_o(pb[i*(B+UW) +: B+UW]));
+                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(WPW), .OUT_REG(1)) u_mul_c (
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p1_valid_q),
+                    .a_i(p1_o_q[i*B +: B]), .b_i(p1_wp_q[i*WPW +: WPW]),
+                    .valid_o(unused_vc), .p_o(pc[i*(B+WPW) +: B+WPW]));
+            end
+        end else begin : g_p2_shared
+            // each dot product's three terms on one multiplier
+            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(UW), .N(3), .II(II)) u_mul_a (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
+                .a_i(p1_d_q), .b_i(p1_u_q), .p_o(pa));
+            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(UW), .N(3), .II(II)) u_mul_b (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
+                .a_i(p1_d_q), .b_i(p1_w_q), .p_o(pb));
+            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(WPW), .N(3), .II(II)) u_mul_c (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
+                .a_i(p1_o_q), .b_i(p1_wp_q), .p_o(pc));
         end
     endgenerate
     wire          p2_valid;
     wire [PRW-1:0] p2_qr;
     wire [LW-1:0] p2_leaf;
-    csgrt_delay #(.WIDTH(PRW + LW), .STAGES(3)) u_dly2 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p1_valid_q),
+    csgrt_delay #(.WIDTH(PRW + LW), .STAGES(MUL_LAT)) u_dly2 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p1_valid_q),
         .data_i({p1_leaf_q, p1_qr_q}), .valid_o(p2_valid), .data_o({p2_leaf, p2_qr}));
 
     // ---- P3: a, b, c ---------------------------------------------------------
@@ -277,8 +340,8 @@ module csgrt_isect #(
     reg [LW-1:0] p3_leaf_q;
     always @(posedge clk_i) begin
         if (!rst_ni) p3_valid_q <= 1'b0;
-        else if (en) p3_valid_q <= p2_valid;
-        if (en) begin
+        else if (adv) p3_valid_q <= p2_valid;
+        if (adv) begin
             p3_a_q    <= sa[F +: AW];
             p3_b_q    <= sb[F +: BW];
             p3_c_q    <= c_d;
@@ -289,20 +352,38 @@ module csgrt_isect #(
     // ---- P4: b*b, a*c --------------------------------------------------------
     wire [2*BW-1:0]   p4_bb;
     wire [AW+CW-1:0]  p4_ac;
-    wire              unused_vbb, unused_vac;
-    csgrt_mul #(.A_WIDTH(BW), .B_WIDTH(BW), .OUT_REG(1)) u_mul_bb (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p3_valid_q),
-        .a_i(p3_b_q), .b_i(p3_b_q), .valid_o(unused_vbb), .p_o(p4_bb));
-    csgrt_mul #(.A_WIDTH(AW), .B_WIDTH(CW), .OUT_REG(1)) u_mul_ac (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p3_valid_q),
-        .a_i(p3_a_q), .b_i(p3_c_q), .valid_o(unused_vac), .p_o(p4_ac));
+    generate
+        if (II == 1) begin : g_p4_each
+            wire unused_vbb, unused_vac;
+            csgrt_mul #(.A_WIDTH(BW), .B_WIDTH(BW), .OUT_REG(1)) u_mul_bb (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p3_valid_q),
+                .a_i(p3_b_q), .b_i(p3_b_q), .valid_o(unused_vbb), .p_o(p4_bb));
+            csgrt_mul #(.A_WIDTH(AW), .B_WIDTH(CW), .OUT_REG(1)) u_mul_ac (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p3_valid_q),
+                .a_i(p3_a_q), .b_i(p3_c_q), .valid_o(unused_vac), .p_o(p4_ac));
+        end else begin : g_p4_shared
+            // b*b and a*c on one BW x CW multiplier (AW < BW < CW), the
+            // operands sign-extended: each product is exact in BW + CW bits
+            // and its low 2BW (AW+CW) bits are the narrow product's
+            localparam P4W = BW + CW;
+            wire [2*P4W-1:0] p4_p;
+            wire [BW-1:0] p4_a_x = {{(BW-AW){p3_a_q[AW-1]}}, p3_a_q};
+            wire [CW-1:0] p4_b_x = {{(CW-BW){p3_b_q[BW-1]}}, p3_b_q};
+            csgrt_mul_vec #(.A_WIDTH(BW), .B_WIDTH(CW), .N(2), .II(II)) u_mul_p4 (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
+                .a_i({p4_a_x, p3_b_q}), .b_i({p3_c_q, p4_b_x}), .p_o(p4_p));
+            assign p4_bb = p4_p[0 +: 2*BW];
+            assign p4_ac = p4_p[P4W +: AW+CW];
+            wire unused_p4 = ^{p4_p[P4W-1:2*BW], p4_p[2*P4W-1:P4W+AW+CW]};   // sign copies
+        end
+    endgenerate
     wire          p4_valid;
     wire [AW-1:0] p4_a;
     wire [BW-1:0] p4_b;
     wire [CW-1:0] p4_c;
     wire [LW-1:0] p4_leaf;
-    csgrt_delay #(.WIDTH(AW + BW + CW + LW), .STAGES(3)) u_dly4 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p3_valid_q),
+    csgrt_delay #(.WIDTH(AW + BW + CW + LW), .STAGES(MUL_LAT)) u_dly4 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p3_valid_q),
         .data_i({p3_leaf_q, p3_c_q, p3_b_q, p3_a_q}), .valid_o(p4_valid),
         .data_o({p4_leaf, p4_c, p4_b, p4_a}));
 
@@ -324,8 +405,8 @@ module csgrt_isect #(
     reg [SBW-1:0]   p5_side_q;
     always @(posedge clk_i) begin
         if (!rst_ni) p5_valid_q <= 1'b0;
-        else if (en) p5_valid_q <= p4_valid;
-        if (en) begin
+        else if (adv) p5_valid_q <= p4_valid;
+        if (adv) begin
             p5_n_q    <= disc[2*SQ-1:0];   // disc[DSW-1] is the sign, kept in flags
             p5_side_q <= {flags_d, p4_leaf, p4_c, p4_b, p4_a};
         end
@@ -338,7 +419,7 @@ module csgrt_isect #(
     // the sidebands' RAM lines end in fabric registers: P7 and P9 compute
     // on them straight away (csgrt_delay_ram OUT_REG)
     csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(SBW), .USER_OUT_REG(1)) u_sqrt (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p5_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p5_valid_q),
         .n_i(p5_n_q), .user_i(p5_side_q),
         .valid_o(p6_valid), .root_o(p6_s), .user_o(p6_side));
     wire [AW-1:0]  p6_a     = p6_side[0 +: AW];
@@ -367,8 +448,8 @@ module csgrt_isect #(
     reg [SB7W-1:0] p7_side_q;
     always @(posedge clk_i) begin
         if (!rst_ni) p7_valid_q <= 1'b0;
-        else if (en) p7_valid_q <= p6_valid;
-        if (en) begin
+        else if (adv) p7_valid_q <= p6_valid;
+        if (adv) begin
             p7_num0_q <= num0;
             p7_den0_q <= den0;
             p7_num1_q <= c_sh;   // t_second = (c << F) / qq
@@ -384,11 +465,11 @@ module csgrt_isect #(
     wire [SB7W-1:0] p8_side;
     wire            unused_v1, unused_u1;
     csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(SB7W), .USER_OUT_REG(1)) u_div0 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p7_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p7_valid_q),
         .num_i(p7_num0_q), .den_i(p7_den0_q), .user_i(p7_side_q),
         .valid_o(p8_valid), .quot_o(q0_mag), .neg_o(q0_neg), .ovf_o(q0_ovf), .user_o(p8_side));
     csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div1 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .valid_i(p7_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p7_valid_q),
         .num_i(p7_num1_q), .den_i(p7_den1_q), .user_i(1'b0),
         .valid_o(unused_v1), .quot_o(q1_mag), .neg_o(q1_neg), .ovf_o(q1_ovf), .user_o(unused_u1));
 
@@ -421,8 +502,8 @@ module csgrt_isect #(
     reg [SBW-1:0]  p9_side_q;          // the sideband without qq == 0 (used in P9)
     always @(posedge clk_i) begin
         if (!rst_ni)  p9_valid_q <= 1'b0;
-        else if (en)  p9_valid_q <= p8_valid;
-        if (en) begin
+        else if (adv)  p9_valid_q <= p8_valid;
+        if (adv) begin
             p9_t0_q   <= t0_div;
             p9_t1_q   <= t1_q;
             p9_r0_q   <= r0_div;
@@ -488,7 +569,7 @@ module csgrt_isect #(
     csgrt_skid #(.WIDTH(OUTW)) u_skid (
         .clk_i  (clk_i),
         .rst_ni (rst_ni),
-        .valid_i(p9_valid_q),
+        .valid_i(p9_valid_q && last),
         .ready_o(en),
         .ready_next_o(en_next),
         .data_i ({o_leaf, count_d, t0_d, range0_d, enter0_d, t1_d, range1_d, enter1_d, inside_d,
@@ -500,9 +581,9 @@ module csgrt_isect #(
     );
 
     generate
-        if (BITS < 12 || BITS > 32 || LEAF_WIDTH < 1) begin : g_bad_param
+        if (BITS < 12 || BITS > 32 || LEAF_WIDTH < 1 || (II != 1 && II != 3)) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_isect needs 12 <= BITS <= 32 and LEAF_WIDTH >= 1");
+                $display("ERROR %m: csgrt_isect needs 12 <= BITS <= 32, LEAF_WIDTH >= 1, II = 1 or 3");
                 $finish;
             end
         end

@@ -34,6 +34,8 @@ module csgrt_top #(
     parameter MAX_LIGHTS    = 8,     // point lights
     parameter MAX_MATERIALS = 255,   // materials besides air
     parameter NUM_UNITS     = 1,     // intersection lanes, each an isect + walk unit
+    parameter ISECT_II      = 1,     // clocks per ray-primitive pair of each intersection unit: 1, or 3 (a third of
+                                     // its multipliers and their wiring: the 24-bit builds' congestion, docs/fpga.md)
     parameter LUT_FILE      = "rtl/srgb_lut.hex",
     // effects (docs/effects.md): absent from the netlist when 0
     parameter SHADOWS       = 0,     // shadow rays to every light
@@ -252,7 +254,7 @@ module csgrt_top #(
                 wire unused_inf = ^{inf, lane_info_valid[k], inf_ready};
             end
 
-            csgrt_isect #(.BITS(BITS), .LEAF_WIDTH(SIDE_W)) u_isect (
+            csgrt_isect #(.BITS(BITS), .LEAF_WIDTH(SIDE_W), .II(ISECT_II)) u_isect (
                 .clk_i, .rst_ni,
                 .valid_i (pair_valid[k]), .ready_o (pair_ready[k]),
                 .o_i (pair_o[k*3*BITS +: 3*BITS]), .d_i (pair_d[k*3*BITS +: 3*BITS]), .coef_i (pair_coef),

@@ -4,7 +4,7 @@
 #
 #   tools/synth.sh [--bits 24] [--freq 100] [--baud 3000000] [--out out/synth]
 #                  [--tree-height 8] [--max-leaves 64] [--effects none|all|shadows,reflection,refraction]
-#                  [--no-specular] [--sort-inserts 1|2] [--share-ii 3|1] [--units 1] [--max-lights 8]
+#                  [--no-specular] [--sort-inserts 1|2] [--share-ii 3|1] [--isect-ii 1|3] [--units 1] [--max-lights 8]
 #                  [--allow-timing-fail] [--stop-after-synth] [--skip-synth] [--per-module]
 #                  [--behavioural-mul] [--lut-tile-max 36] [--router router1|router2] [--contexts 8]
 #                  [--placer heap|static] [--heap-beta 0.9] [--place-only | --route-only] [--heatmap]
@@ -70,7 +70,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 
 BITS=24 FREQ=100 BAUD=3000000 OUT=out/synth TREE_HEIGHT=8 MAX_LEAVES="" ALLOW_FAIL=0 STOP_SYNTH=0 SKIP_SYNTH=0
-EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 UNITS=1 CONTEXTS=8 MAX_LIGHTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
+EFFECTS=none SPECULAR=1 SORT_INSERTS=1 SHARE_II=3 ISECT_II=1 UNITS=1 CONTEXTS=8 MAX_LIGHTS=8 PER_MODULE=0 ROUTER=router1 DEFS="-DSYNTHESIS -DCSGRT_ECP5_DSP"
 LUT_TILE_MAX=36 PLACER=heap HEAP_BETA="" STAGE=all HEATMAP=0 ALT_WEIGHTS=0 DRY_RUN=0 SEED=1
 TIMING_WEIGHT="" CRIT_EXP="" TMG_RIPUP=0
 while [ $# -gt 0 ]; do
@@ -84,6 +84,7 @@ while [ $# -gt 0 ]; do
         --no-specular) SPECULAR=0; shift ;;       # csgrt_top's SPECULAR = 0: no phong highlights
         --sort-inserts) SORT_INSERTS=$2; shift 2 ;;   # csgrt_top's SORT_INSERTS (the event sorter's insertions per clock)
         --share-ii) SHARE_II=$2; shift 2 ;;       # csgrt_top's SHARE_II (clocks per item of the time-shared blocks)
+        --isect-ii) ISECT_II=$2; shift 2 ;;       # csgrt_top's ISECT_II (clocks per pair of the intersection unit)
         --units) UNITS=$2; shift 2 ;;             # csgrt_top's NUM_UNITS (intersection lanes)
         --contexts) CONTEXTS=$2; shift 2 ;;       # csgrt_top's CONTEXTS (pixels in flight in the ray tree)
         --max-lights) MAX_LIGHTS=$2; shift 2 ;;   # csgrt_top's MAX_LIGHTS (a scene with more is refused: status 4)
@@ -146,6 +147,10 @@ done
 [ "$SPECULAR" = 1 ] || EFFECTS="$EFFECTS,nospecular"   # the label in the summary and report.json
 case "$SORT_INSERTS" in 1) ;; 2) EFFECTS="$EFFECTS,sort2" ;; *) echo "synth.sh: --sort-inserts takes 1 or 2" >&2; exit 1 ;; esac
 case "$SHARE_II" in 3) ;; 1) EFFECTS="$EFFECTS,share1" ;; *) echo "synth.sh: --share-ii takes 3 or 1" >&2; exit 1 ;; esac
+# ISECT_II 3: a third of the intersection unit's multipliers (docs/fpga.md);
+# passed to yosys only when not 1, as MAX_LIGHTS below
+ISECT_PARAM=""
+case "$ISECT_II" in 1) ;; 3) EFFECTS="$EFFECTS,isect3"; ISECT_PARAM="-set ISECT_II 3" ;; *) echo "synth.sh: --isect-ii takes 1 or 3" >&2; exit 1 ;; esac
 case "$UNITS" in 1) ;; [2-9]) EFFECTS="$EFFECTS,units$UNITS" ;; *) echo "synth.sh: --units takes 1 to 9" >&2; exit 1 ;; esac
 case "$CONTEXTS" in 8) ;; 2|4|16|32|64) EFFECTS="$EFFECTS,ctx$CONTEXTS" ;; *) echo "synth.sh: --contexts takes a power of two from 2 to 64" >&2; exit 1 ;; esac
 # MAX_LIGHTS: every light's position and colour is a register of static
@@ -165,7 +170,7 @@ esac
 if [ "$DRY_RUN" = 1 ]; then
     echo "synth.sh: BITS=$BITS TREE_HEIGHT=$TREE_HEIGHT MAX_LEAVES=$MAX_LEAVES MAX_LIGHTS=$MAX_LIGHTS" \
          "SHADOWS=$SHADOWS REFLECTION=$REFLECTION REFRACTION=$REFRACTION SPECULAR=$SPECULAR" \
-         "NUM_UNITS=$UNITS CONTEXTS=$CONTEXTS FREQ=$FREQ ROUTER=$ROUTER STAGE=$STAGE SEED=$SEED" \
+         "NUM_UNITS=$UNITS ISECT_II=$ISECT_II CONTEXTS=$CONTEXTS FREQ=$FREQ ROUTER=$ROUTER STAGE=$STAGE SEED=$SEED" \
          "TIMING_WEIGHT=${TIMING_WEIGHT:-default} CRIT_EXP=${CRIT_EXP:-default} TMG_RIPUP=$TMG_RIPUP OUT=$OUT"
     exit 0
 fi
@@ -192,7 +197,7 @@ PLL_MHZ=$(python3 -c "print(f'{25.0 / $CLKI_DIV * $CLKFB_DIV:.4f}')")
 CLK_HZ=$(python3 -c "print(round(25e6 / $CLKI_DIV * $CLKFB_DIV))")
 UART_DIV=$(python3 -c "print(max(4, round($CLK_HZ / $BAUD)))")
 BAUD_ERR=$(python3 -c "print(f'{($CLK_HZ / $UART_DIV / $BAUD - 1) * 100:+.2f}')")
-PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS -set CONTEXTS $CONTEXTS $LIGHTS_PARAM
+PARAMS="-set BITS $BITS -set TREE_HEIGHT $TREE_HEIGHT -set MAX_LEAVES $MAX_LEAVES -set SHADOWS $SHADOWS -set REFLECTION $REFLECTION -set REFRACTION $REFRACTION -set SPECULAR $SPECULAR -set SORT_INSERTS $SORT_INSERTS -set SHARE_II $SHARE_II -set NUM_UNITS $UNITS -set CONTEXTS $CONTEXTS $LIGHTS_PARAM $ISECT_PARAM
         -set CLK_HZ $CLK_HZ -set PLL_CLKI_DIV $CLKI_DIV -set PLL_CLKFB_DIV $CLKFB_DIV
         -set PLL_CLKOP_DIV $CLKOP_DIV -set PLL_CLKOP_CPHASE $CLKOP_CPHASE -set UART_DIV $UART_DIV"
 PARAMS=$(echo $PARAMS)   # one line for yosys

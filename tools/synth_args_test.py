@@ -76,6 +76,11 @@ def test_effects_and_lights(ctx):
     check((s["SHADOWS"], s["REFLECTION"], s["REFRACTION"]) == ("1", "1", "1"), f"{s}")
 
 
+def test_isect_ii(ctx):
+    check(settings(ctx)["ISECT_II"] == "1", "the default intersection unit takes a pair per clock")
+    check(settings(ctx, "--isect-ii", "3")["ISECT_II"] == "3", "--isect-ii 3")
+
+
 def test_seed(ctx):
     check(settings(ctx)["SEED"] == "1", "the default seed is 1")
     check(settings(ctx, "--seed", "7")["SEED"] == "7", "--seed 7")
@@ -94,6 +99,7 @@ def test_refusals(ctx):
     refused(ctx, "--tree-height must be a number", "--tree-height", "seven")
     refused(ctx, "outside 1..10", "--tree-height", "0")
     refused(ctx, "--max-lights takes 1 to 8", "--max-lights", "9")
+    refused(ctx, "--isect-ii takes 1 or 3", "--isect-ii", "2")
     refused(ctx, "--alt-weights needs --router router2", "--alt-weights")
     refused(ctx, "--heatmap needs --router router2", "--heatmap", "--router", "router1")
     refused(ctx, "--seed must be a number", "--seed", "x")
@@ -106,6 +112,7 @@ if __name__ == "__main__":
     sys.exit(run_suite("SynthArgs", [("LeafStoreFollowsTheTree", test_leaf_store_follows_the_tree),
                                      ("MakefileTableAgrees", test_makefile_table_agrees),
                                      ("EffectsAndLights", test_effects_and_lights),
+                                     ("IsectII", test_isect_ii),
                                      ("Seed", test_seed),
                                      ("PlacerTiming", test_placer_timing),
                                      ("Refusals", test_refusals)], __file__))

@@ -30,6 +30,7 @@ module csgrt_board_ctrl #(
     parameter SPECULAR     = 1,
     parameter SORT_INSERTS = 1,          // csgrt_top's event sorter insertions per clock
     parameter SHARE_II     = 3,          // csgrt_top's shading clocks per item (3 or 1)
+    parameter ISECT_II     = 1,          // csgrt_top's clocks per intersection pair (1 or 3)
     parameter NUM_UNITS    = 1,          // csgrt_top's intersection lanes
     parameter CONTEXTS     = 8,          // csgrt_top's pixels in flight in the ray tree
     parameter MAX_LIGHTS   = 8,          // csgrt_top's point lights (a scene with more: status 4)
@@ -103,7 +104,7 @@ module csgrt_board_ctrl #(
 
     csgrt_top #(.BITS(BITS), .MAX_LEAVES(MAX_LEAVES), .TREE_HEIGHT(TREE_HEIGHT), .LUT_FILE(LUT_FILE),
                 .SHADOWS(SHADOWS), .REFLECTION(REFLECTION), .REFRACTION(REFRACTION),
-                .SPECULAR(SPECULAR), .SORT_INSERTS(SORT_INSERTS), .SHARE_II(SHARE_II),
+                .SPECULAR(SPECULAR), .SORT_INSERTS(SORT_INSERTS), .SHARE_II(SHARE_II), .ISECT_II(ISECT_II),
                 .NUM_UNITS(NUM_UNITS), .CONTEXTS(CONTEXTS), .MAX_LIGHTS(MAX_LIGHTS)) u_core (
         .clk_i, .rst_ni (core_rst_nq),
         .load_valid_i (word_valid_q), .load_ready_o (load_ready), .load_word_i (word_q),

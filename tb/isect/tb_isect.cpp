@@ -9,7 +9,8 @@
 // saturation happen, with unit directions (random or axis-aligned) and
 // origins anywhere in the coordinate range; coverage counters must all be
 // non-zero. Random input gaps and output back-pressure; a back-to-back run
-// checks latency 2F+23 and full throughput.
+// checks latency 2F+23 and full throughput. The time-shared unit (II = 3,
+// BITS 16 and 24) the same way, its latency and one pair per three clocks.
 #include "Vtb_isect.h"
 #include "compile.h"
 #include "fixed.h"
@@ -53,46 +54,50 @@ inline void set_field(W& w, int lsb, int width, i64 v) {
     tb::set_bits(w, lsb, width, uint64_t(v));
 }
 
-template <int NB>
+// Dut<NB, II>: the instance of width NB and initiation interval II (its
+// ports b<NB>_*, or s<NB>_* for the time-shared II = 3 ones)
+template <int NB, int II>
 struct Dut;
 
-#define ISECT_DUT(NB)                                                                                 \
+#define ISECT_DUT(NB, II, PFX)                                                                          \
     template <>                                                                                       \
-    struct Dut<NB> {                                                                                  \
+    struct Dut<NB, II> {                                                                              \
         static tb::StreamPorts ports(Top* t) {                                                        \
-            return {&t->b##NB##_clk_i, &t->b##NB##_rst_ni, &t->b##NB##_valid_i,                       \
-                    &t->b##NB##_ready_o, &t->b##NB##_valid_o, &t->b##NB##_ready_i};                   \
+            return {&t->PFX##NB##_clk_i, &t->PFX##NB##_rst_ni, &t->PFX##NB##_valid_i,                       \
+                    &t->PFX##NB##_ready_o, &t->PFX##NB##_valid_o, &t->PFX##NB##_ready_i};                   \
         }                                                                                             \
         static void drive(Top* t, const Case& c, unsigned tag) {                                      \
             for (int i = 0; i < 3; ++i) {                                                             \
-                set_field(t->b##NB##_o_i, i * NB, NB, c.ray.o[i]);                                    \
-                set_field(t->b##NB##_d_i, i * NB, NB, c.ray.d[i]);                                    \
+                set_field(t->PFX##NB##_o_i, i * NB, NB, c.ray.o[i]);                                    \
+                set_field(t->PFX##NB##_d_i, i * NB, NB, c.ray.d[i]);                                    \
             }                                                                                         \
-            for (int k = 0; k < csgrt::kNumCoefs; ++k) set_field(t->b##NB##_coef_i, k * NB, NB, c.coef[k]); \
-            t->b##NB##_leaf_i = uint16_t(tag);                                                        \
+            for (int k = 0; k < csgrt::kNumCoefs; ++k) set_field(t->PFX##NB##_coef_i, k * NB, NB, c.coef[k]); \
+            t->PFX##NB##_leaf_i = uint16_t(tag);                                                        \
         }                                                                                             \
         static Out read(Top* t) {                                                                     \
             const int F = NB - 3;                                                                     \
             Out o;                                                                                    \
-            o.count = t->b##NB##_count_o;                                                             \
-            o.inside = t->b##NB##_inside_o;                                                           \
-            o.t[0] = tb::sext(t->b##NB##_t0_o, F + 2);                                                \
-            o.t[1] = tb::sext(t->b##NB##_t1_o, F + 2);                                                \
-            o.range[0] = t->b##NB##_range0_o;                                                         \
-            o.range[1] = t->b##NB##_range1_o;                                                         \
-            o.enter[0] = t->b##NB##_enter0_o;                                                         \
-            o.enter[1] = t->b##NB##_enter1_o;                                                         \
-            o.a = tb::sext(t->b##NB##_a_o, F + 3);                                                    \
-            o.b = tb::sext(t->b##NB##_b_o, F + 6);                                                    \
-            o.c = tb::sext(t->b##NB##_c_o, F + 9);                                                    \
-            o.tag = t->b##NB##_leaf_o;                                                                \
+            o.count = t->PFX##NB##_count_o;                                                             \
+            o.inside = t->PFX##NB##_inside_o;                                                           \
+            o.t[0] = tb::sext(t->PFX##NB##_t0_o, F + 2);                                                \
+            o.t[1] = tb::sext(t->PFX##NB##_t1_o, F + 2);                                                \
+            o.range[0] = t->PFX##NB##_range0_o;                                                         \
+            o.range[1] = t->PFX##NB##_range1_o;                                                         \
+            o.enter[0] = t->PFX##NB##_enter0_o;                                                         \
+            o.enter[1] = t->PFX##NB##_enter1_o;                                                         \
+            o.a = tb::sext(t->PFX##NB##_a_o, F + 3);                                                    \
+            o.b = tb::sext(t->PFX##NB##_b_o, F + 6);                                                    \
+            o.c = tb::sext(t->PFX##NB##_c_o, F + 9);                                                    \
+            o.tag = t->PFX##NB##_leaf_o;                                                                \
             return o;                                                                                 \
         }                                                                                             \
     };
-ISECT_DUT(12)
-ISECT_DUT(16)
-ISECT_DUT(24)
-ISECT_DUT(32)
+ISECT_DUT(12, 1, b)
+ISECT_DUT(16, 1, b)
+ISECT_DUT(24, 1, b)
+ISECT_DUT(32, 1, b)
+ISECT_DUT(16, 3, s)
+ISECT_DUT(24, 3, s)
 
 std::string compare(const Out& o, const csgrt::LeafEvents<i64>& m, unsigned want_tag) {
     std::ostringstream s;
@@ -344,7 +349,7 @@ struct Coverage {
     }
 };
 
-template <int NB>
+template <int NB, int II = 1>
 void run_width(size_t count, double gap, double stall, uint64_t seed, bool check_latency) {
     const csgrt::Formats fmt(NB);
     Gen gen(NB, seed);
@@ -368,20 +373,28 @@ void run_width(size_t count, double gap, double stall, uint64_t seed, bool check
     tb::Harness<Top> h;
     Top* t = h.top.get();
     auto r = tb::run_stream(
-        t, Dut<NB>::ports(t), cases.size(), [&](size_t i) { Dut<NB>::drive(t, cases[i], unsigned(i & 0xffff)); },
+        t, Dut<NB, II>::ports(t), cases.size(), [&](size_t i) { Dut<NB, II>::drive(t, cases[i], unsigned(i & 0xffff)); },
         [&](size_t i) -> std::string {
-            const std::string m = compare(Dut<NB>::read(t), want[i], unsigned(i & 0xffff));
+            const std::string m = compare(Dut<NB, II>::read(t), want[i], unsigned(i & 0xffff));
             return m.empty() ? m : m + "\n    " + describe(cases[i]);
         },
         gap, stall, seed + 1);
-    EXPECT_TRUE(r.ok()) << "BITS=" << NB << ": " << r.summary();
+    EXPECT_TRUE(r.ok()) << "BITS=" << NB << " II=" << II << ": " << r.summary();
     EXPECT_EQ(rejected, 0u) << "cases outside the model's discriminant bound";
-    std::printf("isect BITS=%d: %s\n  coverage: %s\n", NB, r.summary().c_str(), cov.str().c_str());
+    std::printf("isect BITS=%d II=%d: %s\n  coverage: %s\n", NB, II, r.summary().c_str(), cov.str().c_str());
     if (check_latency) {
+        // II = 1: 2F+23 clocks, 2F+22 stages and the skid. II = 3: the
+        // same stages less one in each of P0, P2, P4 (two beats where
+        // II = 1 takes three clocks) plus the input register, 2F+20
+        // beats of three clocks (the pair is taken at a beat's last clock
+        // and handed to the skid at one), and the skid's clock:
+        // 3 (2F+20) + 1
         const int F = NB - 3;
-        EXPECT_EQ(r.min_latency, 2 * F + 23);
-        EXPECT_EQ(r.max_latency, 2 * F + 23);
-        EXPECT_LE(r.cycles, cases.size() + size_t(2 * F + 23) + 2 + 201);
+        const int latency = II == 1 ? 2 * F + 23 : 3 * (2 * F + 20) + 1;
+        EXPECT_EQ(r.min_latency, latency);
+        EXPECT_EQ(r.max_latency, latency);
+        EXPECT_LE(r.cycles, size_t(II) * cases.size() + size_t(latency) + 2 + 201);
+        EXPECT_GE(r.cycles, size_t(II) * cases.size());
     } else {
         for (const char* key : {"a=0,b=0", "linear", "disc<0", "disc=0", "b=0 (a!=0)", "qq=0", "equal pair dropped",
                                 "two events", "NegInf", "PosInf", "finite"})
@@ -401,5 +414,12 @@ TEST(Isect, Bits12) { run_width<12>(scaled(200000), 0.25, 0.25, tb::seed(112), f
 TEST(Isect, Bits16) { run_width<16>(scaled(200000), 0.25, 0.25, tb::seed(116), false); }
 TEST(Isect, Bits24) { run_width<24>(scaled(200000), 0.25, 0.25, tb::seed(124), false); }
 TEST(Isect, Bits32) { run_width<32>(scaled(200000), 0.25, 0.25, tb::seed(132), false); }
+// the time-shared unit (II = 3): the same results, one pair per three clocks
+TEST(Isect, SharedLatencyAndThroughput) {
+    run_width<16, 3>(2000, 0.0, 0.0, 202, true);
+    run_width<24, 3>(2000, 0.0, 0.0, 203, true);
+}
+TEST(Isect, SharedBits16) { run_width<16, 3>(scaled(100000), 0.25, 0.25, tb::seed(216), false); }
+TEST(Isect, SharedBits24) { run_width<24, 3>(scaled(100000), 0.25, 0.25, tb::seed(224), false); }
 
 }  // namespace

@@ -1,6 +1,7 @@
 `default_nettype none
 // tb_isect — Verilator top for tb_isect.cpp: csgrt_isect at BITS 12, 16, 24
-// and 32, one clock each so that only the instance under test is evaluated.
+// and 32, and time-shared (II = 3) at 16 and 24 (s16, s24); one clock
+// each so that only the instance under test is evaluated.
 module tb_isect (
     input  wire              b12_clk_i,
     input  wire              b12_rst_ni,
@@ -89,7 +90,51 @@ module tb_isect (
     output wire              b32_inside_o,
     output wire [31:0]   b32_a_o,
     output wire [34:0]   b32_b_o,
-    output wire [37:0]   b32_c_o
+    output wire [37:0]   b32_c_o,
+    input  wire              s16_clk_i,
+    input  wire              s16_rst_ni,
+    input  wire              s16_valid_i,
+    output wire              s16_ready_o,
+    input  wire [47:0]  s16_o_i,
+    input  wire [47:0]  s16_d_i,
+    input  wire [159:0] s16_coef_i,
+    input  wire [15:0]       s16_leaf_i,
+    output wire              s16_valid_o,
+    input  wire              s16_ready_i,
+    output wire [15:0]       s16_leaf_o,
+    output wire [1:0]        s16_count_o,
+    output wire [14:0]   s16_t0_o,
+    output wire [1:0]        s16_range0_o,
+    output wire              s16_enter0_o,
+    output wire [14:0]   s16_t1_o,
+    output wire [1:0]        s16_range1_o,
+    output wire              s16_enter1_o,
+    output wire              s16_inside_o,
+    output wire [15:0]   s16_a_o,
+    output wire [18:0]   s16_b_o,
+    output wire [21:0]   s16_c_o,
+    input  wire              s24_clk_i,
+    input  wire              s24_rst_ni,
+    input  wire              s24_valid_i,
+    output wire              s24_ready_o,
+    input  wire [71:0]  s24_o_i,
+    input  wire [71:0]  s24_d_i,
+    input  wire [239:0] s24_coef_i,
+    input  wire [15:0]       s24_leaf_i,
+    output wire              s24_valid_o,
+    input  wire              s24_ready_i,
+    output wire [15:0]       s24_leaf_o,
+    output wire [1:0]        s24_count_o,
+    output wire [22:0]   s24_t0_o,
+    output wire [1:0]        s24_range0_o,
+    output wire              s24_enter0_o,
+    output wire [22:0]   s24_t1_o,
+    output wire [1:0]        s24_range1_o,
+    output wire              s24_enter1_o,
+    output wire              s24_inside_o,
+    output wire [23:0]   s24_a_o,
+    output wire [26:0]   s24_b_o,
+    output wire [29:0]   s24_c_o
 );
 
     csgrt_isect #(.BITS(12), .LEAF_WIDTH(16)) u_b12 (
@@ -183,6 +228,53 @@ module tb_isect (
         .a_o(b32_a_o),
         .b_o(b32_b_o),
         .c_o(b32_c_o));
+
+    // the time-shared intersection unit (II = 3), at 16 and 24 bits
+    csgrt_isect #(.BITS(16), .LEAF_WIDTH(16), .II(3)) u_s16 (
+        .clk_i(s16_clk_i), .rst_ni(s16_rst_ni),
+        .valid_i(s16_valid_i),
+        .ready_o(s16_ready_o),
+        .o_i(s16_o_i),
+        .d_i(s16_d_i),
+        .coef_i(s16_coef_i),
+        .leaf_i(s16_leaf_i),
+        .valid_o(s16_valid_o),
+        .ready_i(s16_ready_i),
+        .leaf_o(s16_leaf_o),
+        .count_o(s16_count_o),
+        .t0_o(s16_t0_o),
+        .range0_o(s16_range0_o),
+        .enter0_o(s16_enter0_o),
+        .t1_o(s16_t1_o),
+        .range1_o(s16_range1_o),
+        .enter1_o(s16_enter1_o),
+        .inside_o(s16_inside_o),
+        .a_o(s16_a_o),
+        .b_o(s16_b_o),
+        .c_o(s16_c_o));
+
+    csgrt_isect #(.BITS(24), .LEAF_WIDTH(16), .II(3)) u_s24 (
+        .clk_i(s24_clk_i), .rst_ni(s24_rst_ni),
+        .valid_i(s24_valid_i),
+        .ready_o(s24_ready_o),
+        .o_i(s24_o_i),
+        .d_i(s24_d_i),
+        .coef_i(s24_coef_i),
+        .leaf_i(s24_leaf_i),
+        .valid_o(s24_valid_o),
+        .ready_i(s24_ready_i),
+        .leaf_o(s24_leaf_o),
+        .count_o(s24_count_o),
+        .t0_o(s24_t0_o),
+        .range0_o(s24_range0_o),
+        .enter0_o(s24_enter0_o),
+        .t1_o(s24_t1_o),
+        .range1_o(s24_range1_o),
+        .enter1_o(s24_enter1_o),
+        .inside_o(s24_inside_o),
+        .a_o(s24_a_o),
+        .b_o(s24_b_o),
+        .c_o(s24_c_o));
 endmodule
 
 `default_nettype wire

@@ -22,6 +22,7 @@ module csgrt_ulx3s #(
     parameter SPECULAR      = 1,          // phong highlights (make synth SPECULAR=0: none)
     parameter SORT_INSERTS  = 1,          // the event sorter's insertions per clock (synth.sh --sort-inserts)
     parameter SHARE_II      = 3,          // the shading's clocks per item, 3 or 1 (synth.sh --share-ii)
+    parameter ISECT_II      = 1,          // clocks per intersection pair, 1 or 3 (synth.sh --isect-ii)
     parameter NUM_UNITS     = 1,          // intersection lanes (synth.sh --units)
     parameter CONTEXTS      = 8,          // pixels in flight in the ray tree (synth.sh --contexts)
     parameter MAX_LIGHTS    = 8,          // point lights a scene may have (synth.sh --max-lights)
@@ -93,7 +94,7 @@ module csgrt_ulx3s #(
     csgrt_board_ctrl #(
         .BITS (BITS), .MAX_LEAVES (MAX_LEAVES), .TREE_HEIGHT (TREE_HEIGHT),
         .SHADOWS (SHADOWS), .REFLECTION (REFLECTION), .REFRACTION (REFRACTION), .SPECULAR (SPECULAR),
-        .SORT_INSERTS (SORT_INSERTS), .SHARE_II (SHARE_II), .NUM_UNITS (NUM_UNITS),
+        .SORT_INSERTS (SORT_INSERTS), .SHARE_II (SHARE_II), .ISECT_II (ISECT_II), .NUM_UNITS (NUM_UNITS),
         .CONTEXTS (CONTEXTS), .MAX_LIGHTS (MAX_LIGHTS), .IDLE_CLOCKS (IDLE_CLOCKS), .LUT_FILE (LUT_FILE)
     ) u_ctrl (
         .clk_i (clk), .rst_ni (rst_n),
