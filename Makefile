@@ -57,7 +57,7 @@ help:
 	@echo "make model   build build/csgrt, the golden model and scene compiler"
 	@echo "make render [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [WIDTH=320] [HEIGHT=240]"
 	@echo "             render with the golden model to out/model/<scene>.png"
-	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [CONTEXTS=8] [MAX_LIGHTS=8] [TREE_HEIGHT=8] [WIDTH=..] [HEIGHT=..]"
+	@echo "make sim [SCENE=scenes/x.pov] [BITS=24] [TIES=paper|regular] [TRACE=1] [UNITS=1] [ISECT_II=3] [CONTEXTS=8] [MAX_LIGHTS=8] [TREE_HEIGHT=8] [WIDTH=..] [HEIGHT=..]"
 	@echo "             run the RTL in Verilator; writes out/sim/<scene>.png and compares with the model"
 	@echo "make test    run every test; ends with 'N passed, N failed'"
 	@echo "make synth [BITS=24] [EFFECTS=none|all|shadows,reflection,...] [SPECULAR=0] [SHARE_II=1] [ISECT_II=3] [CONTEXTS=16] [MAX_LIGHTS=4] [LUT_TILE_MAX=81] [TREE_HEIGHT=7] [FREQ=100] [BAUD=3000000]"

@@ -21,29 +21,45 @@
 // clock enables each in tools/logic_depth.py's model; now every enable is
 // a register, ce_i or adv_i.)
 //
+// LAT_MOD3 = 0: the unit's latency is 0 mod 3 instead (csgrt_mul with
+// TILE_REG: 3 clocks), item k shows at phase k of the next beat, and the
+// advance takes item 2 from d_i itself, items 1 and 0 from one and two
+// clocks back: q_o still holds them for the beat after (the same two beats
+// from the items' entry).
+//
 // Handshake: none; ce_i low (the pipeline's stall) holds everything.
 module csgrt_beat_gather #(
     parameter integer WIDTH = 8,   // result width (>= 1)
-    parameter integer N     = 3    // results per beat (1..3)
+    parameter integer N     = 3,   // results per beat (1..3)
+    parameter integer LAT_MOD3 = 2 // the unit's latency mod 3: 2, or 0 (above)
 ) (
     input  wire               clk_i,
     input  wire               ce_i,      // the pipeline runs
     input  wire               adv_i,     // the beat's advance (csgrt_beat's adv_o: ce_i at phase 2)
-    input  wire [WIDTH-1:0]   d_i,       // the unit's output, item k at phase (k + 2) mod 3
+    input  wire [WIDTH-1:0]   d_i,       // the unit's output, item k at phase (k + LAT_MOD3) mod 3
     output wire [N*WIDTH-1:0] q_o        // item k at k*WIDTH
 );
 
     // d_i of the last three running clocks: at the advance (phase 2) item 0
     // (shown at phase 2 of the beat before) is three clocks back, item 1
     // (phase 0) two, item 2 (phase 1) one
-    reg  [WIDTH-1:0] back1_q, back2_q, back3_q;
+    // (LAT_MOD3 0: item 2 is d_i, item 1 one clock back, item 0 two)
+    reg  [WIDTH-1:0] back1_q, back2_q;
     always @(posedge clk_i)
         if (ce_i) begin
             back1_q <= d_i;
             back2_q <= back1_q;
-            back3_q <= back2_q;
         end
-    wire [3*WIDTH-1:0] held = {back1_q, back2_q, back3_q};   // item k at k*WIDTH
+    wire [3*WIDTH-1:0] held;   // item k at k*WIDTH
+    generate
+        if (LAT_MOD3 == 0) begin : g_lat0
+            assign held = {d_i, back1_q, back2_q};
+        end else begin : g_lat2
+            reg [WIDTH-1:0] back3_q;
+            always @(posedge clk_i) if (ce_i) back3_q <= back2_q;
+            assign held = {back1_q, back2_q, back3_q};
+        end
+    endgenerate
     reg  [N*WIDTH-1:0] q_q;
     always @(posedge clk_i)
         if (adv_i) q_q <= held[N*WIDTH-1:0];
@@ -52,9 +68,9 @@ module csgrt_beat_gather #(
         if (N < 3) begin : g_spare
             wire unused_held = ^held[3*WIDTH-1:N*WIDTH];
         end
-        if (WIDTH < 1 || N < 1 || N > 3) begin : g_bad_param
+        if (WIDTH < 1 || N < 1 || N > 3 || (LAT_MOD3 != 0 && LAT_MOD3 != 2)) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_beat_gather needs WIDTH >= 1, 1 <= N <= 3");
+                $display("ERROR %m: csgrt_beat_gather needs WIDTH >= 1, 1 <= N <= 3, LAT_MOD3 0 or 2");
                 $finish;
             end
         end

@@ -28,11 +28,12 @@
 // Pipeline (every rounding is round half up: add 2^(k-1), shift right
 // arithmetically; every division truncates toward zero and saturates):
 //   P0 mul  (3)  A d and A o products, 18 multipliers B x B (each with a
-//                fabric register after it, as P2's and P4's)
+//                fabric register after it, as P2's and P4's; above 18
+//                bits also one behind each MULT18X18D tile: 4 clocks)
 //   P1 add  (1)  u = rnd(A d, FC), w = rnd(A o + p<<F, FC), w + rnd(p, FC-F)
-//   P2 mul  (3)  d.u, d.w, o.(w + rnd(p)) products, 9 multipliers
+//   P2 mul  (3)  d.u, d.w, o.(w + rnd(p)) products, 9 multipliers (4 above 18 bits)
 //   P3 add  (1)  a = rnd(d.u, F), b = rnd(d.w, F), c = rnd(o.(w+p'), F) + rnd(q, FC-F)
-//   P4 mul  (3)  b*b, a*c
+//   P4 mul  (3)  b*b, a*c (4 above 18 bits)
 //   P5 add  (1)  disc = b*b - a*c, the flags a == 0, b == 0, b < 0, c <= 0, a < 0
 //   P6 sqrt (F+6) s = floor(sqrt(disc)) (csgrt_sqrt_core)
 //   P7 add  (1)  qq = -(b + sgn(b) s) with sgn(0) = +1; divider operands:
@@ -43,8 +44,9 @@
 //                root: second event = first)
 //   P10 out (0)  drop of an equal pair, count; into the skid
 //   skid    (1)  csgrt_skid
-// Latency: 2F+23 clocks without back-pressure (BITS 12: 41, 16: 49, 24: 65,
-// 32: 81). Throughput: one ray-primitive pair per clock.
+// Latency: 2F+23 clocks without back-pressure up to 18 bits (BITS 12: 41,
+// 16: 49), 2F+26 above (24: 68, 32: 84). Throughput: one ray-primitive
+// pair per clock.
 //
 // II = 3 (time-shared, csgrt_beat): every stage moves once every three
 // running clocks (a beat), and each multiplier serves three products in
@@ -135,7 +137,13 @@ module csgrt_isect #(
     // logic read that net (tools/logic_depth.py); csgrt_beat stops a
     // simulation if the two differ
     assign ready_o = adv_q;
-    localparam MUL_LAT = (II == 1) ? 3 : 2;   // a product stage, in advances (csgrt_mul OUT_REG / csgrt_mul_vec)
+    // Above 18 bits the products are sums of MULT18X18D tiles, and each
+    // tile gets a register before their sum (csgrt_mul TILE_REG): the
+    // first routed 24-bit build's critical path was a P0 tile -> 5.63 ns
+    // of route across the die -> the tiles' sum (docs/fpga.md). A clock
+    // more per product stage with II = 1; none with II = 3 (csgrt_mul_vec).
+    localparam TREG = (B > 18) ? 1 : 0;
+    localparam MUL_LAT = (II == 1) ? 3 + TREG : 2;   // a product stage, in advances
 
     // ---- input: II = 3 registers the pair, which P0's shared multipliers
     // read for a whole beat (II = 1: straight through) ----------------------
@@ -166,11 +174,11 @@ module csgrt_isect #(
                 for (j = 0; j < 3; j = j + 1) begin : g_p0_col
                     localparam CI = (i == j) ? i : (i + j == 1) ? 3 : (i + j == 2) ? 4 : 5;
                     wire unused_vu, unused_vw;
-                    csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1)) u_mul_u (
+                    csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1), .TILE_REG(TREG)) u_mul_u (
                         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(in_valid),
                         .a_i(in_coef[CI*B +: B]), .b_i(in_d[j*B +: B]),
                         .valid_o(unused_vu), .p_o(pu[(3*i+j)*2*B +: 2*B]));
-                    csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1)) u_mul_w (
+                    csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1), .TILE_REG(TREG)) u_mul_w (
                         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(in_valid),
                         .a_i(in_coef[CI*B +: B]), .b_i(in_o[j*B +: B]),
                         .valid_o(unused_vw), .p_o(pw[(3*i+j)*2*B +: 2*B]));
@@ -185,10 +193,10 @@ module csgrt_isect #(
                 localparam C1 = (i == 1) ? 1 : (i == 0) ? 3 : 5;   // A(i,1)
                 localparam C2 = (i == 2) ? 2 : (i == 0) ? 4 : 5;   // A(i,2)
                 wire [3*B-1:0] row = {in_coef[C2*B +: B], in_coef[C1*B +: B], in_coef[C0*B +: B]};
-                csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(B), .N(3), .II(II)) u_mul_u (
+                csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(B), .N(3), .II(II), .TILE_REG(TREG)) u_mul_u (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
                     .a_i(row), .b_i(in_d), .p_o(pu[3*i*2*B +: 3*2*B]));
-                csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(B), .N(3), .II(II)) u_mul_w (
+                csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(B), .N(3), .II(II), .TILE_REG(TREG)) u_mul_w (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
                     .a_i(row), .b_i(in_o), .p_o(pw[3*i*2*B +: 3*2*B]));
             end
@@ -279,28 +287,28 @@ module csgrt_isect #(
         if (II == 1) begin : g_p2_each
             for (i = 0; i < 3; i = i + 1) begin : g_p2
                 wire unused_va, unused_vb, unused_vc;
-                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1)) u_mul_a (
+                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1), .TILE_REG(TREG)) u_mul_a (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p1_valid_q),
                     .a_i(p1_d_q[i*B +: B]), .b_i(p1_u_q[i*UW +: UW]),
                     .valid_o(unused_va), .p_o(pa[i*(B+UW) +: B+UW]));
-                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1)) u_mul_b (
+                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(UW), .OUT_REG(1), .TILE_REG(TREG)) u_mul_b (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p1_valid_q),
                     .a_i(p1_d_q[i*B +: B]), .b_i(p1_w_q[i*UW +: UW]),
                     .valid_o(unused_vb), .p_o(pb[i*(B+UW) +: B+UW]));
-                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(WPW), .OUT_REG(1)) u_mul_c (
+                csgrt_mul #(.A_WIDTH(B), .B_WIDTH(WPW), .OUT_REG(1), .TILE_REG(TREG)) u_mul_c (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p1_valid_q),
                     .a_i(p1_o_q[i*B +: B]), .b_i(p1_wp_q[i*WPW +: WPW]),
                     .valid_o(unused_vc), .p_o(pc[i*(B+WPW) +: B+WPW]));
             end
         end else begin : g_p2_shared
             // each dot product's three terms on one multiplier
-            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(UW), .N(3), .II(II)) u_mul_a (
+            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(UW), .N(3), .II(II), .TILE_REG(TREG)) u_mul_a (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
                 .a_i(p1_d_q), .b_i(p1_u_q), .p_o(pa));
-            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(UW), .N(3), .II(II)) u_mul_b (
+            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(UW), .N(3), .II(II), .TILE_REG(TREG)) u_mul_b (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
                 .a_i(p1_d_q), .b_i(p1_w_q), .p_o(pb));
-            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(WPW), .N(3), .II(II)) u_mul_c (
+            csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(WPW), .N(3), .II(II), .TILE_REG(TREG)) u_mul_c (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
                 .a_i(p1_o_q), .b_i(p1_wp_q), .p_o(pc));
         end
@@ -355,10 +363,10 @@ module csgrt_isect #(
     generate
         if (II == 1) begin : g_p4_each
             wire unused_vbb, unused_vac;
-            csgrt_mul #(.A_WIDTH(BW), .B_WIDTH(BW), .OUT_REG(1)) u_mul_bb (
+            csgrt_mul #(.A_WIDTH(BW), .B_WIDTH(BW), .OUT_REG(1), .TILE_REG(TREG)) u_mul_bb (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p3_valid_q),
                 .a_i(p3_b_q), .b_i(p3_b_q), .valid_o(unused_vbb), .p_o(p4_bb));
-            csgrt_mul #(.A_WIDTH(AW), .B_WIDTH(CW), .OUT_REG(1)) u_mul_ac (
+            csgrt_mul #(.A_WIDTH(AW), .B_WIDTH(CW), .OUT_REG(1), .TILE_REG(TREG)) u_mul_ac (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p3_valid_q),
                 .a_i(p3_a_q), .b_i(p3_c_q), .valid_o(unused_vac), .p_o(p4_ac));
         end else begin : g_p4_shared
@@ -369,7 +377,7 @@ module csgrt_isect #(
             wire [2*P4W-1:0] p4_p;
             wire [BW-1:0] p4_a_x = {{(BW-AW){p3_a_q[AW-1]}}, p3_a_q};
             wire [CW-1:0] p4_b_x = {{(CW-BW){p3_b_q[BW-1]}}, p3_b_q};
-            csgrt_mul_vec #(.A_WIDTH(BW), .B_WIDTH(CW), .N(2), .II(II)) u_mul_p4 (
+            csgrt_mul_vec #(.A_WIDTH(BW), .B_WIDTH(CW), .N(2), .II(II), .TILE_REG(TREG)) u_mul_p4 (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
                 .a_i({p4_a_x, p3_b_q}), .b_i({p3_c_q, p4_b_x}), .p_o(p4_p));
             assign p4_bb = p4_p[0 +: 2*BW];

@@ -30,6 +30,15 @@
 // output registers in the DSP columns (the routed critical path of a build
 // was a block's output -> 4.4 ns of route -> the tiles' sum -> the
 // consumer's three-product sum, docs/fpga.md).
+// TILE_REG = 1 adds a register before the sum instead: behind each tile
+// of a wide product (its MULT18X18D's output register, or a fabric
+// tile's), so that the route from the block in its DSP column ends at a
+// flip-flop the placer can put beside the block, and the tiles' sum starts
+// from flip-flops (the routed critical path of the first 24-bit build: a
+// P0 tile -> 5.63 ns of route -> the tiles' sum -> OUT_REG's register,
+// docs/fpga.md). One clock more; behavioural: a register after the product.
+// A one-tile product has no sum, and the register is only a clock of delay.
+// Latency: 2 + TILE_REG + OUT_REG clocks.
 // Handshake: none of its own. valid_i is shifted alongside the operands and
 // comes out as valid_o with the product; ce_i is the stall input of the
 // enclosing pipeline (low = hold every register).
@@ -42,7 +51,8 @@ module csgrt_mul #(
     // CSGRT_ECP5_DSP: a tile whose chunk widths' product is at most this is
     // built in the fabric (default 36: the 6 x 6 corner of a 24 x 24 product)
     parameter LUT_TILE_MAX = `CSGRT_LUT_TILE_MAX,
-    parameter OUT_REG = 0     // 1: one more register after the product (latency 3)
+    parameter OUT_REG = 0,    // 1: one more register after the product (latency 3)
+    parameter TILE_REG = 0    // 1: a register behind each tile, before their sum (one clock more, above)
 ) (
     input  wire                       clk_i,
     input  wire                       rst_ni,   // synchronous, active low (valid bits only)
@@ -56,17 +66,15 @@ module csgrt_mul #(
 
     localparam P_WIDTH = A_WIDTH + B_WIDTH;   // exact signed product width
 
-    reg valid_q, valid_q2;
+    // valid through the input, output and tile registers (OUT_REG's below)
+    localparam VL = 2 + (TILE_REG != 0 ? 1 : 0);
+    reg [VL-1:0] valid_q;
     always @(posedge clk_i) begin
-        if (!rst_ni) begin
-            valid_q  <= 1'b0;
-            valid_q2 <= 1'b0;
-        end else if (ce_i) begin
-            valid_q  <= valid_i;
-            valid_q2 <= valid_q;
-        end
+        if (!rst_ni)   valid_q <= {VL{1'b0}};
+        else if (ce_i) valid_q <= {valid_q[VL-2:0], valid_i};
     end
-    wire [P_WIDTH-1:0] p_w;   // the product after the two registers (and the tiles' sum)
+    wire valid_w = valid_q[VL-1];
+    wire [P_WIDTH-1:0] p_w;   // the product after the two registers (the tile registers and the tiles' sum)
 
 `ifndef CSGRT_ECP5_DSP
     // ---- behavioural
@@ -88,7 +96,13 @@ module csgrt_mul #(
             p_q <= p_d;
         end
     end
-    assign p_w = p_q;
+    if (TILE_REG != 0) begin : g_tile_reg
+        reg [P_WIDTH-1:0] p_t_q;
+        always @(posedge clk_i) if (ce_i) p_t_q <= p_q;
+        assign p_w = p_t_q;
+    end else begin : g_no_tile_reg
+        assign p_w = p_q;
+    end
 `else
     // ---- ECP5: tiles of 18-bit chunks
     // Operand x of width W is sum_k x_k 2^(18k), chunk k < N-1 unsigned 18
@@ -165,8 +179,17 @@ module csgrt_mul #(
                         wire unused_top = ^p_x[37:WA+WB+2];
                     end
                 end
+                // TILE_REG: the tile's value from a register of its own
+                wire [WA+WB+1:0] v_r;
+                if (TILE_REG != 0) begin : g_tile_reg
+                    reg [WA+WB+1:0] v_q;
+                    always @(posedge clk_i) if (ce_i) v_q <= v;
+                    assign v_r = v_q;
+                end else begin : g_no_tile_reg
+                    assign v_r = v;
+                end
                 // extended to P_WIDTH, shifted into place
-                wire [P_WIDTH+WA+WB+1:0] v_x = {{P_WIDTH{v[WA+WB+1]}}, v};
+                wire [P_WIDTH+WA+WB+1:0] v_x = {{P_WIDTH{v_r[WA+WB+1]}}, v_r};
                 assign tile[(i*NB+j)*P_WIDTH +: P_WIDTH] = v_x[P_WIDTH-1:0] << SH;
                 wire unused_vx = ^v_x[P_WIDTH+WA+WB+1:P_WIDTH];   // beyond the product's width
             end
@@ -188,21 +211,21 @@ module csgrt_mul #(
             reg [P_WIDTH-1:0] p_q3;
             always @(posedge clk_i) begin
                 if (!rst_ni)   valid_q3 <= 1'b0;
-                else if (ce_i) valid_q3 <= valid_q2;
+                else if (ce_i) valid_q3 <= valid_w;
                 if (ce_i) p_q3 <= p_w;
             end
             assign valid_o = valid_q3;
             assign p_o     = p_q3;
         end else begin : g_out_direct
-            assign valid_o = valid_q2;
+            assign valid_o = valid_w;
             assign p_o     = p_w;
         end
     endgenerate
 
     generate
-        if (A_WIDTH < 2 || B_WIDTH < 2 || LUT_TILE_MAX < 0 || OUT_REG < 0 || OUT_REG > 1) begin : g_bad_width
+        if (A_WIDTH < 2 || B_WIDTH < 2 || LUT_TILE_MAX < 0 || OUT_REG < 0 || OUT_REG > 1 || TILE_REG < 0 || TILE_REG > 1) begin : g_bad_width
             initial begin
-                $display("ERROR %m: csgrt_mul A_WIDTH and B_WIDTH must be >= 2, LUT_TILE_MAX >= 0, OUT_REG 0 or 1");
+                $display("ERROR %m: csgrt_mul A_WIDTH and B_WIDTH must be >= 2, LUT_TILE_MAX >= 0, OUT_REG and TILE_REG 0 or 1");
                 $finish;
             end
         end

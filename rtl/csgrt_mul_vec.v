@@ -26,15 +26,21 @@
 // csgrt_mul's p_o shows those of two enabled clocks earlier: the pipeline
 // around it keeps its delay lines (csgrt_delay, two stages on adv).
 // II = 1: N csgrt_mul on ce_i (phase_i and adv_i unused).
+// TILE_REG = 1: csgrt_mul's register behind each tile of a wide product.
+// With II = 3 the product then comes out three clocks after its pair,
+// at phase k of the next beat, and the gather takes pair 2's straight from
+// the multiplier at the advance (csgrt_beat_gather LAT_MOD3 0): the same
+// two beats. With II = 1 it is one enabled clock more.
 //
-// Latency: 2 beats (II = 1: 2 enabled clocks). Handshake: none (the
+// Latency: 2 beats (II = 1: 2 + TILE_REG enabled clocks). Handshake: none (the
 // enclosing pipeline's stall ce_i; everything holds while it is low).
 // Multipliers: N (II = 1) or 1 (II = 3), each A_WIDTH x B_WIDTH.
 module csgrt_mul_vec #(
     parameter A_WIDTH = 18,   // width of each signed operand a_k (>= 2)
     parameter B_WIDTH = 18,   // width of each signed operand b_k (>= 2)
     parameter integer N  = 3, // products (1..3)
-    parameter integer II = 1  // 1: one multiplier per product; 3: one shared
+    parameter integer II = 1, // 1: one multiplier per product; 3: one shared
+    parameter TILE_REG   = 0  // csgrt_mul's: a register behind each tile (above)
 ) (
     input  wire                           clk_i,
     input  wire                           rst_ni,    // synchronous, active low
@@ -60,7 +66,7 @@ module csgrt_mul_vec #(
             wire unused_phase = ^{phase_i, adv_i};
             for (k = 0; k < N; k = k + 1) begin : g_mul
                 wire unused_v;
-                csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH)) u_mul (
+                csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH), .TILE_REG(TILE_REG)) u_mul (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
                     .a_i(a_i[k*A_WIDTH +: A_WIDTH]), .b_i(b_i[k*B_WIDTH +: B_WIDTH]),
                     .valid_o(unused_v), .p_o(p_o[k*PW +: PW]));
@@ -86,11 +92,12 @@ module csgrt_mul_vec #(
             end
             wire [PW-1:0] prod;
             wire          unused_v;
-            csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH)) u_mul (
+            csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH), .TILE_REG(TILE_REG)) u_mul (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
                 .a_i(a_sel), .b_i(b_sel), .valid_o(unused_v), .p_o(prod));
-            // pair k's product comes out two clocks after phase k: gathered
-            csgrt_beat_gather #(.WIDTH(PW), .N(N)) u_gather (
+            // pair k's product comes out two clocks after phase k (TILE_REG:
+            // three): gathered
+            csgrt_beat_gather #(.WIDTH(PW), .N(N), .LAT_MOD3(TILE_REG != 0 ? 0 : 2)) u_gather (
                 .clk_i(clk_i), .ce_i(ce_i), .adv_i(adv_i), .d_i(prod), .q_o(p_o));
         end
 

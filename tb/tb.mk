@@ -16,7 +16,7 @@ TB_NAMES     := sqrt div isect camera shade
 TB_NAMES     += class_node class_tree walk spawn quadric_at mul mul_vec fifo
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 # the multiplier bench once more as the FPGA build maps csgrt_mul (MULT18X18D tiles)
-TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t81
+TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t81 $(BUILD)/tb/mul_ecp5_treg $(BUILD)/tb/mul_vec_treg
 ECP5_MODELS  := $(wildcard tb/ecp5/*.v)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_COMMON    := $(wildcard tb/common/*.h)
@@ -67,6 +67,14 @@ endef
 $(eval $(call MUL_ECP5_RULE,mul_ecp5,))
 # and with the larger fabric tiles of tools/synth.sh --lut-tile-max 81
 $(eval $(call MUL_ECP5_RULE,mul_ecp5_t81,-DCSGRT_LUT_TILE_MAX=81))
+# and with a register behind each tile (csgrt_mul TILE_REG), fabric tiles of 81 too
+$(eval $(call MUL_ECP5_RULE,mul_ecp5_treg,-DCSGRT_LUT_TILE_MAX=81 -GTILE_REG=1 -CFLAGS -DMUL_TILE_REG=1))
+# the time-shared multiplier with the tile registers (two beats still), tiled
+$(BUILD)/tb/mul_vec_treg: tb/mul_vec/tb_mul_vec.v tb/mul_vec/tb_mul_vec.cpp $(TB_RTL) $(TB_COMMON) $(ECP5_MODELS)
+	@mkdir -p $(BUILD)/tb/mul_vec_treg.obj
+	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP -GTILE_REG=1 --Mdir $(BUILD)/tb/mul_vec_treg.obj --top-module tb_mul_vec \
+	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
+	    -o $(CURDIR)/$(BUILD)/tb/mul_vec_treg $(CURDIR)/tb/mul_vec/tb_mul_vec.v $(CURDIR)/tb/mul_vec/tb_mul_vec.cpp
 
 .PHONY: tb lint-rtl
 tb: $(TB_BINS)

@@ -6,7 +6,7 @@ image quality. For every width (BITS) x method (exact, epsilon) x scene the
 sweep measures
 
   - the intersection path's latency (csgrt_isect's documented 2F+23 clocks,
-    2F+20 before 2026-12-06 and 2F+19 before f636932; tb/isect asserts it in simulation at 12, 16, 24
+    2F+26 above 18 bits since 2026-12-06 (tile registers), 2F+20 before 2026-12-06 and 2F+19 before f636932; tb/isect asserts it in simulation at 12, 16, 24
     and 32 bits) and a
     whole pixel's latency (measured: a 1x1 frame in the RTL simulation, from
     start to the pixel, its shadow and reflected rays included);
@@ -574,13 +574,20 @@ def join_notes(r):
     r["notes"] = "; ".join(x for x in (r.get("model_notes"), r.get("rtl_notes")) if x)
 
 
+
+def isect_latency(bits):
+    """csgrt_isect.v's latency at ISECT_II 1: 2F+23 clocks, 3 more above 18
+    bits (the products' tile registers; 2F+20 before 2026-12-06, 2F+19
+    before f636932); asserted by tb/isect at 12, 16, 24, 32."""
+    return 2 * (bits - 3) + 23 + (3 if bits > 18 else 0)
+
 def rtl_columns(r, a, bits, scene, binaries, work, rtl_notes):
     """The RTL's columns of an exact-method row: latencies, cycles, matched pixels, Verilator time
     (the `make sim` binary of the width, built once per effect set in `binaries`)."""
     F = bits - 3
     sim_size, frame_size = a.sim_size, a.frame_size
     sz = lambda s: f"{s[0]}x{s[1]}"
-    r["isect_latency"] = 2 * F + 23   # csgrt_isect.v (2F+20 before 2026-12-06, 2F+19 before f636932); asserted by tb/isect at 12, 16, 24, 32
+    r["isect_latency"] = isect_latency(bits)
     fx = (1, 1, 1, 1) if a.effects == "all" else scene_units(scene)
     if fx not in binaries:
         binaries[fx] = sim_build(bits, *fx)
@@ -860,7 +867,8 @@ def render_md(rows, scenes, bits_all, exact, have_synth, have_area, nominal, fra
         f"Widths {', '.join(map(str, bits_all))}; scenes {', '.join('`' + s + '`' for s in scenes)}.\n")
     add("## How each figure is measured\n")
     add(f"- **Latency.** *isect*: the intersection unit's latency, csgrt_isect's documented 2F+23 clocks "
-        "(F = BITS-3; 2F+20 before its products got a fabric register, 2026-12-06, and 2F+19 before commit f636932, as in rows measured on older RTL), which `tb/isect` asserts in simulation at 12, 16, 24 and 32 bits (20 and 28 by the "
+        "(F = BITS-3; 2F+26 above 18 bits, where each MULT18X18D tile of a product has a register before "
+        "the tiles' sum, since 2026-12-06; 2F+20 before its products got a fabric register, 2026-12-06, and 2F+19 before commit f636932, as in rows measured on older RTL), which `tb/isect` asserts in simulation at 12, 16, 24 and 32 bits (20 and 28 by the "
         "formula). *pixel*: measured, the RTL simulation of a 1x1 frame (the centre pixel), clocks from start "
         "to the pixel: camera, intersection of every leaf, sort, walk, shading, and the pixel's shadow and "
         f"reflected rays (hardware `{r0['hw_config']}`: one lane, tree height, leaves, effect units).")

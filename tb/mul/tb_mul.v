@@ -5,10 +5,12 @@
 // enable. Built twice: behavioural (build/tb/mul) and with CSGRT_ECP5_DSP
 // and the MULT18X18D model (build/tb/mul_ecp5). Instance k's operands are
 // a_i/b_i[k*MAXW +: WA(k)/WB(k)], its product p_o[k*2*MAXW +: WA(k)+WB(k)];
-// the width table is kWidths in tb_mul.cpp.
+// the width table is kWidths in tb_mul.cpp. TILE_REG = 1 (build/tb/mul_ecp5_treg)
+// puts a register behind each tile: latency 3.
 module tb_mul #(
-    parameter N    = 18,   // instances
-    parameter MAXW = 40    // operand slot width
+    parameter N        = 18,   // instances
+    parameter MAXW     = 40,   // operand slot width
+    parameter TILE_REG = 0     // csgrt_mul's
 ) (
     input  wire              clk_i,
     input  wire              rst_ni,
@@ -44,7 +46,7 @@ module tb_mul #(
             localparam WA = width_a(k);
             localparam WB = width_b(k);
             wire [WA+WB-1:0] p;
-            csgrt_mul #(.A_WIDTH(WA), .B_WIDTH(WB)) u_mul (
+            csgrt_mul #(.A_WIDTH(WA), .B_WIDTH(WB), .TILE_REG(TILE_REG)) u_mul (
                 .clk_i, .rst_ni, .ce_i, .valid_i,
                 .a_i (a_i[k*MAXW +: WA]), .b_i (b_i[k*MAXW +: WB]),
                 .valid_o (valid_o[k]), .p_o (p));
