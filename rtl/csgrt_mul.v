@@ -96,13 +96,10 @@ module csgrt_mul #(
             p_q <= p_d;
         end
     end
-    if (TILE_REG != 0) begin : g_tile_reg
-        reg [P_WIDTH-1:0] p_t_q;
-        always @(posedge clk_i) if (ce_i) p_t_q <= p_q;
-        assign p_w = p_t_q;
-    end else begin : g_no_tile_reg
-        assign p_w = p_q;
-    end
+    // TILE_REG: one more register (csgrt_delay of 0 stages is a wire)
+    wire unused_tv;
+    csgrt_delay #(.WIDTH(P_WIDTH), .STAGES(TILE_REG != 0 ? 1 : 0)) u_tile_reg (
+        .clk_i, .rst_ni, .ce_i, .valid_i(1'b0), .data_i(p_q), .valid_o(unused_tv), .data_o(p_w));
 `else
     // ---- ECP5: tiles of 18-bit chunks
     // Operand x of width W is sum_k x_k 2^(18k), chunk k < N-1 unsigned 18
@@ -181,13 +178,9 @@ module csgrt_mul #(
                 end
                 // TILE_REG: the tile's value from a register of its own
                 wire [WA+WB+1:0] v_r;
-                if (TILE_REG != 0) begin : g_tile_reg
-                    reg [WA+WB+1:0] v_q;
-                    always @(posedge clk_i) if (ce_i) v_q <= v;
-                    assign v_r = v_q;
-                end else begin : g_no_tile_reg
-                    assign v_r = v;
-                end
+                wire             unused_tv;
+                csgrt_delay #(.WIDTH(WA + WB + 2), .STAGES(TILE_REG != 0 ? 1 : 0)) u_tile_reg (
+                    .clk_i, .rst_ni, .ce_i, .valid_i(1'b0), .data_i(v), .valid_o(unused_tv), .data_o(v_r));
                 // extended to P_WIDTH, shifted into place
                 wire [P_WIDTH+WA+WB+1:0] v_x = {{P_WIDTH{v_r[WA+WB+1]}}, v_r};
                 assign tile[(i*NB+j)*P_WIDTH +: P_WIDTH] = v_x[P_WIDTH-1:0] << SH;
