@@ -164,7 +164,11 @@ module csgrt_isect #(
     // block's output -> 4.4 ns of route -> the tiles' sum -> the sum of
     // three: 84.00 MHz, docs/fpga.md); P1's sums and P5's subtract have the
     // same form.
-    // A(i,j) -> coefficient index: diagonal i, (0,1) 3, (0,2) 4, (1,2) 5.
+    // A(i,j) -> coefficient index: diagonal i, (0,1) 3, (0,2) 4, (1,2) 5
+    // (both P0 forms below take A's entries from here)
+    function automatic integer coef_of(input integer row, input integer col);
+        coef_of = (row == col) ? row : (row + col == 1) ? 3 : (row + col == 2) ? 4 : 5;
+    endfunction
     wire [9*2*B-1:0] pu, pw;   // products (3i+j), 2B bits each
     genvar i, j;
     generate
@@ -172,7 +176,7 @@ module csgrt_isect #(
             wire unused_phase = ^phase;   // always 0 (csgrt_beat)
             for (i = 0; i < 3; i = i + 1) begin : g_p0_row
                 for (j = 0; j < 3; j = j + 1) begin : g_p0_col
-                    localparam CI = (i == j) ? i : (i + j == 1) ? 3 : (i + j == 2) ? 4 : 5;
+                    localparam CI = coef_of(i, j);
                     wire unused_vu, unused_vw;
                     csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .OUT_REG(1), .TILE_REG(TREG)) u_mul_u (
                         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(in_valid),
@@ -189,10 +193,8 @@ module csgrt_isect #(
             // beat's gather register is the fabric register OUT_REG gives
             // the II = 1 products
             for (i = 0; i < 3; i = i + 1) begin : g_p0_row
-                localparam C0 = (i == 0) ? 0 : (i == 1) ? 3 : 4;   // A(i,0)
-                localparam C1 = (i == 1) ? 1 : (i == 0) ? 3 : 5;   // A(i,1)
-                localparam C2 = (i == 2) ? 2 : (i == 0) ? 4 : 5;   // A(i,2)
-                wire [3*B-1:0] row = {in_coef[C2*B +: B], in_coef[C1*B +: B], in_coef[C0*B +: B]};
+                wire [3*B-1:0] row = {in_coef[coef_of(i, 2)*B +: B], in_coef[coef_of(i, 1)*B +: B],
+                                      in_coef[coef_of(i, 0)*B +: B]};
                 csgrt_mul_vec #(.A_WIDTH(B), .B_WIDTH(B), .N(3), .II(II), .TILE_REG(TREG)) u_mul_u (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .adv_i(adv), .phase_i(phase),
                     .a_i(row), .b_i(in_d), .p_o(pu[3*i*2*B +: 3*2*B]));

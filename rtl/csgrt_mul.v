@@ -198,22 +198,9 @@ module csgrt_mul #(
     assign p_w = sum;
 `endif
 
-    generate
-        if (OUT_REG != 0) begin : g_out_reg
-            reg                valid_q3;
-            reg [P_WIDTH-1:0] p_q3;
-            always @(posedge clk_i) begin
-                if (!rst_ni)   valid_q3 <= 1'b0;
-                else if (ce_i) valid_q3 <= valid_w;
-                if (ce_i) p_q3 <= p_w;
-            end
-            assign valid_o = valid_q3;
-            assign p_o     = p_q3;
-        end else begin : g_out_direct
-            assign valid_o = valid_w;
-            assign p_o     = p_w;
-        end
-    endgenerate
+    // OUT_REG: one more register, valid alongside (0 stages: a wire)
+    csgrt_delay #(.WIDTH(P_WIDTH), .STAGES(OUT_REG != 0 ? 1 : 0)) u_out_reg (
+        .clk_i, .rst_ni, .ce_i, .valid_i(valid_w), .data_i(p_w), .valid_o, .data_o(p_o));
 
     generate
         if (A_WIDTH < 2 || B_WIDTH < 2 || LUT_TILE_MAX < 0 || OUT_REG < 0 || OUT_REG > 1 || TILE_REG < 0 || TILE_REG > 1) begin : g_bad_width

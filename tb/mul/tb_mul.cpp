@@ -109,14 +109,14 @@ Result run(Top* t, size_t count, double ce_prob, uint64_t seed, Pick pick) {
             pipe.pop_back();
             pipe.push_front(send ? std::optional<Op>(op) : std::nullopt);
         }
-        const std::optional<Op>& s2 = pipe.back();
+        const std::optional<Op>& due = pipe.back();   // the operands whose product is due at p_o
         for (int k = 0; k < kN; ++k)
-            if (((t->valid_o >> k) & 1) != uint32_t(s2.has_value())) {
+            if (((t->valid_o >> k) & 1) != uint32_t(due.has_value())) {
                 ++r.mismatches;
                 if (r.messages.size() < 8) r.messages.push_back("valid_o not kLatency enabled clocks after valid_i");
             }
-        if (!ce || !s2) continue;
-        const Op& want = *s2;
+        if (!ce || !due) continue;
+        const Op& want = *due;
         for (int k = 0; k < kN; ++k) {
             const i128 exact = i128(want.a[k]) * i128(want.b[k]);
             const i128 got = get_signed(t->p_o, k * 2 * kMaxW, kWidths[k].a + kWidths[k].b);
