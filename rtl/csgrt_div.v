@@ -8,6 +8,12 @@
 // Latency: QUOT_BITS + 2 clocks without back-pressure (input stage,
 // QUOT_BITS quotient stages, the output skid buffer; the final negation is
 // combinational into the skid buffer). Throughput: one result per clock.
+// II = 3: the core's iteration stages find three quotient bits each, one
+// per running clock of a three-clock beat (csgrt_beat, csgrt_div_core
+// FOLD = 3); an operand pair is taken at a beat's last clock, one per beat,
+// and the result is handed to the skid buffer at one: latency
+// 3 (ceil(QUOT_BITS / 3) + 1) + 1 clocks, throughput one result per three
+// clocks.
 // Handshake: as csgrt_sqrt: valid/ready on both sides; every stage advances
 // on one global enable, the skid buffer's registered ready, which is also
 // ready_o (a register output, no combinational path from ready_i).
@@ -16,7 +22,8 @@ module csgrt_div #(
     parameter DEN_WIDTH  = 8,    // signed denominator width (>= 2)
     parameter QUOT_BITS  = 8,    // quotient magnitude bits = stages (>= 2)
     parameter USER_WIDTH = 1,    // sideband carried alongside (>= 1)
-    parameter USER_OUT_REG = 0   // csgrt_div_core's
+    parameter USER_OUT_REG = 0,  // csgrt_div_core's
+    parameter II         = 1     // running clocks per result: 1, or 3 (csgrt_div_core FOLD = 3)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_ni,   // synchronous, active low
@@ -44,18 +51,27 @@ module csgrt_div #(
                                       : core_neg ? ~quot_mag + {{QUOT_BITS{1'b0}}, 1'b1}
                                       : quot_mag;
 
-    assign ready_o = en;
+    // the beat (II = 1: adv = en, every running clock); ready_o is the
+    // advance from a register of its own, as csgrt_isect's
+    wire       en_next;   // en after the next rising edge
+    wire [1:0] phase;
+    wire       last, adv;
+    csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .ce_next_i(en_next),
+                                  .phase_o(phase), .last_o(last), .adv_o(adv), .adv_q_o(ready_o));
 
     csgrt_div_core #(
         .NUM_WIDTH (NUM_WIDTH),
         .DEN_WIDTH (DEN_WIDTH),
         .QUOT_BITS (QUOT_BITS),
         .USER_WIDTH(USER_WIDTH),
-        .USER_OUT_REG(USER_OUT_REG)
+        .USER_OUT_REG(USER_OUT_REG),
+        .FOLD      (II)
     ) u_core (
         .clk_i  (clk_i),
         .rst_ni (rst_ni),
-        .ce_i   (en),
+        .ce_i   (adv),
+        .run_i  (en),
+        .phase_i(phase),
         .valid_i(valid_i),
         .num_i  (num_i),
         .den_i  (den_i),
@@ -67,15 +83,14 @@ module csgrt_div #(
         .user_o (core_user)
     );
 
-    wire unused_en_next;   // no beat here
     csgrt_skid #(
         .WIDTH(QUOT_BITS + 3 + USER_WIDTH)
     ) u_skid (
         .clk_i  (clk_i),
         .rst_ni (rst_ni),
-        .valid_i(core_valid),
+        .valid_i(core_valid && last),
         .ready_o(en),
-        .ready_next_o(unused_en_next),
+        .ready_next_o(en_next),
         .data_i ({core_user, core_ovf, core_neg, quot_signed}),
         .valid_o(valid_o),
         .ready_i(ready_i),

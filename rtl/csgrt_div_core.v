@@ -14,19 +14,28 @@
 // |n| = 0111, rem = 01, bit 1: rem = 3 >= 3 -> 0, q = 1; bit 0: rem = 1, q = 10;
 // quot_o = 2, neg_o = 1 (the result is -2).
 //
-// Latency: QUOT_BITS + 1 clocks, counted in enabled clocks. Handshake: none;
-// a global stage enable ce_i (low = hold) and a valid bit shifted alongside.
-// csgrt_div adds the sign and valid/ready.
+// FOLD = 3 (a pipeline that moves every third running clock, csgrt_beat
+// II = 3): each iteration stage finds three quotient bits, one per running
+// clock of a beat, as csgrt_sqrt_core's FOLD = 3 does (the same steps in the
+// same order: the same result bit for bit), in ceil(QUOT_BITS / 3) stages.
+//
+// Latency: ceil(QUOT_BITS / FOLD) + 1 clocks, counted in enabled clocks of
+// ce_i. Handshake: none; a global stage enable ce_i (low = hold; FOLD = 3:
+// the beat's advance) and a valid bit shifted alongside. csgrt_div adds the
+// sign and valid/ready.
 module csgrt_div_core #(
     parameter NUM_WIDTH  = 16,   // signed numerator width (> QUOT_BITS)
     parameter DEN_WIDTH  = 8,    // signed denominator width (>= 2)
     parameter QUOT_BITS  = 8,    // quotient magnitude bits = iteration stages (>= 2)
     parameter USER_WIDTH = 1,    // sideband carried alongside (>= 1)
-    parameter USER_OUT_REG = 0   // 1: the sideband's RAM line ends in a fabric register (csgrt_delay_ram OUT_REG)
+    parameter USER_OUT_REG = 0,  // 1: the sideband's RAM line ends in a fabric register (csgrt_delay_ram OUT_REG)
+    parameter FOLD       = 1     // quotient bits per stage: 1, or 3 (one per running clock of a three-clock beat)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_ni,   // synchronous, active low (valid bits only)
-    input  wire                  ce_i,     // stage enable (low = stall)
+    input  wire                  ce_i,     // stage enable (low = stall; FOLD = 3: the beat's advance)
+    input  wire                  run_i,    // FOLD = 3: a running clock of the beat (csgrt_beat's ce_i)
+    input  wire [1:0]            phase_i,  // FOLD = 3: its phase (csgrt_beat's phase_o)
     input  wire                  valid_i,
     input  wire [NUM_WIDTH-1:0]  num_i,    // two's complement
     input  wire [DEN_WIDTH-1:0]  den_i,    // two's complement
@@ -75,35 +84,37 @@ module csgrt_div_core #(
         end
     end
 
-    // ---- stages 1..QB: one quotient bit each ------------------------------
+    // ---- stages 1..NS: one quotient bit each (FOLD = 3: three) -------------
     // Side information (|d|, the low numerator bits, neg, ovf) rides along
     // in one flat word per stage. The sideband user_i, needed only at the
-    // end, takes a RAM delay line of the same QB + 1 enabled clocks (block
-    // or LUT RAM on the FPGA rather than QB + 1 copies in flip-flops).
+    // end, takes a RAM delay line of the same NS + 1 enabled clocks (block
+    // or LUT RAM on the FPGA rather than NS + 1 copies in flip-flops).
     localparam SW = DW + QB + 2;        // side word width
+    localparam NS = (QB + FOLD - 1) / FOLD;   // iteration stages
 
     // Each stage's registers are plain registers of its generate block, seen
     // by the next stage through the wire arrays below (csgrt_sqrt_core says
     // why: the Verilator model writes them as variables of their own).
-    reg  [QB-1:0] valid_q;
-    wire [DW-1:0] rem_w  [0:QB-1];
-    wire [QB-1:0] quot_w [0:QB-1];
-    wire [SW-1:0] side_w [0:QB-1];
+    reg  [NS-1:0] valid_q;
+    wire [DW-1:0] rem_w  [0:NS-1];
+    wire [QB-1:0] quot_w [0:NS-1];
+    wire [SW-1:0] side_w [0:NS-1];
 
     wire [SW-1:0] side0 = {s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
 
     always @(posedge clk_i) begin
         if (!rst_ni) begin
-            valid_q <= {QB{1'b0}};
+            valid_q <= {NS{1'b0}};
         end else if (ce_i) begin
-            valid_q <= {valid_q[QB-2:0], s0_valid_q};
+            valid_q <= {valid_q[NS-2:0], s0_valid_q};
         end
     end
 
+    wire unused_fold = ^{run_i, phase_i};   // FOLD = 1 has no use for them
+
     genvar k;
     generate
-        for (k = 0; k < QB; k = k + 1) begin : g_stage
-            localparam I = QB - 1 - k;   // quotient bit found by this stage
+        for (k = 0; k < NS; k = k + 1) begin : g_stage
             wire [DW-1:0] rem_in;
             wire [QB-1:0] quot_in;
             wire [SW-1:0] side_in;
@@ -116,48 +127,77 @@ module csgrt_div_core #(
                 assign quot_in = quot_w[k-1];
                 assign side_in = side_w[k-1];
             end
-            wire [DW-1:0] ud_in   = side_in[DW-1:0];
-            wire [QB-1:0] lo_in   = side_in[DW +: QB];
-            wire [DW:0]   rem_sh  = {rem_in, lo_in[I]};
-            wire          take    = (rem_sh >= {1'b0, ud_in});
-            wire [DW:0]   rem_nx  = take ? rem_sh - {1'b0, ud_in} : rem_sh;
-            // without overflow rem_nx < |d| < 2^DW: its top bit is zero
-            wire          unused_rem_top = rem_nx[DW];
-            // quot_in < 2^k <= 2^(QB-1): its top bit is zero
-            wire          unused_quot_top = quot_in[QB-1];
-
             reg [DW-1:0] rem_q;
             reg [QB-1:0] quot_q;
             reg [SW-1:0] side_q;
-            always @(posedge clk_i)
-                if (ce_i) begin
-                    rem_q  <= rem_nx[DW-1:0];
-                    quot_q <= {quot_in[QB-2:0], take};
-                    side_q <= side_in;
-                end
             assign rem_w[k]  = rem_q;
             assign quot_w[k] = quot_q;
             assign side_w[k] = side_q;
+
+            // the step's operands: the previous stage's item (FOLD = 1, and
+            // the beat's advance with FOLD = 3) or this stage's own, and the
+            // numerator bit brought down
+            wire take_prev;   // this clock's step starts from the previous stage's item
+            wire step;        // this clock takes a step
+            wire lo_bit;
+            if (FOLD == 1) begin : g_one
+                localparam I = QB - 1 - k;   // quotient bit found by this stage
+                assign take_prev = 1'b1;
+                assign step      = ce_i;
+                assign lo_bit    = side_in[DW + I];
+            end else begin : g_three
+                // quotient bits I0 (at the advance), I1, I2 (phases 0 and
+                // 1); a step past bit 0 (LIVE1/LIVE2 = 0) is not taken
+                localparam J0    = FOLD * k;
+                localparam LIVE1 = (J0 + 1 < QB) ? 1 : 0;
+                localparam LIVE2 = (J0 + 2 < QB) ? 1 : 0;
+                localparam I0    = QB - 1 - J0;
+                localparam I1    = LIVE1 ? QB - 2 - J0 : 0;
+                localparam I2    = LIVE2 ? QB - 3 - J0 : 0;
+                wire advance = (phase_i == 2'd2);
+                assign take_prev = advance;
+                assign step      = run_i && (advance || (phase_i[0] ? (LIVE2 == 1) : (LIVE1 == 1)));
+                assign lo_bit    = advance    ? side_in[DW + I0]
+                                 : phase_i[0] ? side_q[DW + I2] : side_q[DW + I1];
+            end
+            wire [DW-1:0] rem_src  = take_prev ? rem_in  : rem_q;
+            wire [QB-1:0] quot_src = take_prev ? quot_in : quot_q;
+            wire [DW-1:0] ud_src   = take_prev ? side_in[DW-1:0] : side_q[DW-1:0];
+            wire [DW:0]   rem_sh  = {rem_src, lo_bit};
+            wire          take    = (rem_sh >= {1'b0, ud_src});
+            wire [DW:0]   rem_nx  = take ? rem_sh - {1'b0, ud_src} : rem_sh;
+            // without overflow rem_nx < |d| < 2^DW: its top bit is zero
+            wire          unused_rem_top = rem_nx[DW];
+            // quot_src < 2^(QB-1) before the last step: its top bit is zero
+            wire          unused_quot_top = quot_src[QB-1];
+
+            always @(posedge clk_i)
+                if (step) begin
+                    rem_q  <= rem_nx[DW-1:0];
+                    quot_q <= {quot_src[QB-2:0], take};
+                    if (take_prev) side_q <= side_in;
+                end
         end
     endgenerate
 
-    wire [SW-1:0] side_last = side_w[QB-1];
-    assign valid_o = valid_q[QB-1];
-    assign quot_o  = quot_w[QB-1];
+    wire [SW-1:0] side_last = side_w[NS-1];
+    assign valid_o = valid_q[NS-1];
+    assign quot_o  = quot_w[NS-1];
     assign neg_o   = side_last[DW+QB];
     assign ovf_o   = side_last[DW+QB+1];
 
-    csgrt_delay_ram #(.WIDTH(UW), .STAGES(QB + 1), .OUT_REG(USER_OUT_REG)) u_user (
+    csgrt_delay_ram #(.WIDTH(UW), .STAGES(NS + 1), .OUT_REG(USER_OUT_REG)) u_user (
         .clk_i, .rst_ni, .ce_i, .data_i (user_i), .data_o (user_o)
     );
 
     // the last stage's remainder, |d| and numerator bits are not needed
-    wire unused_last = ^{rem_w[QB-1], side_last[DW+QB-1:0]};
+    wire unused_last = ^{rem_w[NS-1], side_last[DW+QB-1:0]};
 
     generate
-        if (NUM_WIDTH <= QUOT_BITS || DEN_WIDTH < 2 || QUOT_BITS < 2 || USER_WIDTH < 1) begin : g_bad_param
+        if (NUM_WIDTH <= QUOT_BITS || DEN_WIDTH < 2 || QUOT_BITS < 2 || USER_WIDTH < 1
+            || (FOLD != 1 && FOLD != 3) || NS < 2) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_div_core needs NUM_WIDTH > QUOT_BITS >= 2, DEN_WIDTH >= 2, USER_WIDTH >= 1");
+                $display("ERROR %m: csgrt_div_core needs NUM_WIDTH > QUOT_BITS >= 2 (>= 4 with FOLD 3), DEN_WIDTH >= 2, USER_WIDTH >= 1, FOLD 1 or 3");
                 $finish;
             end
         end

@@ -56,11 +56,15 @@
 // products are exact in it). 10 multipliers where II = 1 has 29: at
 // BITS 24 about a third of the MULT18X18D blocks and of their operand
 // wiring, the routing congestion of the 24-bit builds (docs/fpga.md).
-// The arithmetic is the same, so are the results, bit for bit. An input
-// register holds the pair for the beat in which P0 reads it, and P0, P2,
-// P4 take two beats (csgrt_mul_vec): latency 3 (2F+20) + 1 clocks
-// without back-pressure (BITS 16: 139, 24: 187; tb/isect checks it);
-// throughput one pair per three clocks.
+// The square root and the dividers find three result bits per stage, one
+// per running clock (csgrt_sqrt_core and csgrt_div_core FOLD = 3): a third
+// of their stages, registers and compare-subtract logic. The arithmetic is
+// the same, so are the results, bit for bit. An input register holds the
+// pair for the beat in which P0 reads it, and P0, P2, P4 take two beats
+// (csgrt_mul_vec), P6 ceil((F+6)/3), P8 ceil((F+1)/3) + 1: latency
+// 3 (13 + ceil((F+6)/3) + ceil((F+1)/3)) + 1 clocks without back-pressure
+// (BITS 16: 76, 24: 91; tb/isect checks it); throughput one pair per three
+// clocks.
 // Handshake: valid/ready on both sides, a transaction moves when valid and
 // ready are both high at a rising edge. All stages advance on one global
 // enable, the output skid buffer's registered ready, which is also ready_o:
@@ -428,8 +432,8 @@ module csgrt_isect #(
     wire [SBW-1:0] p6_side;
     // the sidebands' RAM lines end in fabric registers: P7 and P9 compute
     // on them straight away (csgrt_delay_ram OUT_REG)
-    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(SBW), .USER_OUT_REG(1)) u_sqrt (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p5_valid_q),
+    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(SBW), .USER_OUT_REG(1), .FOLD(II)) u_sqrt (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(en), .phase_i(phase), .valid_i(p5_valid_q),
         .n_i(p5_n_q), .user_i(p5_side_q),
         .valid_o(p6_valid), .root_o(p6_s), .user_o(p6_side));
     wire [AW-1:0]  p6_a     = p6_side[0 +: AW];
@@ -474,12 +478,12 @@ module csgrt_isect #(
     wire            q0_neg, q0_ovf, q1_neg, q1_ovf;
     wire [SB7W-1:0] p8_side;
     wire            unused_v1, unused_u1;
-    csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(SB7W), .USER_OUT_REG(1)) u_div0 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p7_valid_q),
+    csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(SB7W), .USER_OUT_REG(1), .FOLD(II)) u_div0 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(en), .phase_i(phase), .valid_i(p7_valid_q),
         .num_i(p7_num0_q), .den_i(p7_den0_q), .user_i(p7_side_q),
         .valid_o(p8_valid), .quot_o(q0_mag), .neg_o(q0_neg), .ovf_o(q0_ovf), .user_o(p8_side));
-    csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div1 (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p7_valid_q),
+    csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1), .FOLD(II)) u_div1 (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(en), .phase_i(phase), .valid_i(p7_valid_q),
         .num_i(p7_num1_q), .den_i(p7_den1_q), .user_i(1'b0),
         .valid_o(unused_v1), .quot_o(q1_mag), .neg_o(q1_neg), .ovf_o(q1_ovf), .user_o(unused_u1));
 

@@ -619,7 +619,7 @@ module csgrt_spawn #(
     wire [SQ-1:0] nq_root;
     wire          unused_nq_user;
     csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(1)) u_sqrt_n (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(gs_done_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .run_i(1'b0), .phase_i(2'd0), .valid_i(gs_done_q),
         .n_i(gs_q), .user_i(1'b0), .valid_o(nq_valid), .root_o(nq_root), .user_o(unused_nq_user));
 
     // NP: L = root + 1 for three clocks; numerator g_j << F
@@ -667,7 +667,7 @@ module csgrt_spawn #(
     wire          nd_neg;
     wire [1:0]    nd_dph;
     csgrt_div_core #(.NUM_WIDTH(NNW), .DEN_WIDTH(NLW), .QUOT_BITS(F + 1), .USER_WIDTH(2)) u_div_n (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(lh_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .run_i(1'b0), .phase_i(2'd0), .valid_i(lh_valid_q),
         .num_i({lh_gj, {F{1'b0}}}), .den_i(lh_len_q), .user_i(lh_ph_q),
         .valid_o(nd_dvalid), .quot_o(nd_mag), .neg_o(nd_neg), .ovf_o(unused_nd_ovf), .user_o(nd_dph));
     // |n_j| < 2^F: the top quotient bit is zero
@@ -786,7 +786,7 @@ module csgrt_spawn #(
             wire [EMW-1:0] eta_mag;
             wire           unused_eta_neg, unused_eta_user;
             csgrt_div_core #(.NUM_WIDTH(17 + F), .DEN_WIDTH(17), .QUOT_BITS(EMW), .USER_WIDTH(1)) u_div_eta (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(accept),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .run_i(1'b0), .phase_i(2'd0), .valid_i(accept),
                 .num_i({1'b0, s_ior_from_i, {F{1'b0}}}), .den_i({1'b0, s_ior_to_i}), .user_i(1'b0),
                 .valid_o(eta_valid), .quot_o(eta_mag), .neg_o(unused_eta_neg), .ovf_o(eta_ovf),
                 .user_o(unused_eta_user));
@@ -896,7 +896,7 @@ module csgrt_spawn #(
             wire           s5_valid, s5_tir;
             wire [SKB-1:0] s5_sk;
             csgrt_sqrt_core #(.RESULT_BITS(SKB), .USER_WIDTH(1)) u_sqrt_k (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(s4_valid_q),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .run_i(1'b0), .phase_i(2'd0), .valid_i(s4_valid_q),
                 .n_i(s4_rad_q), .user_i(s4_tir_q), .valid_o(s5_valid), .root_o(s5_sk), .user_o(s5_tir));
 
             // ---- S6: a = rnd(eta cos, F) - sk ------------------------------------------------------

@@ -6,6 +6,11 @@
 //
 // Latency: RESULT_BITS + 1 clocks without back-pressure (RESULT_BITS stages
 // and the output skid buffer). Throughput: one result per clock.
+// II = 3: the core's stages find three result bits each, one per running
+// clock of a three-clock beat (csgrt_beat, csgrt_sqrt_core FOLD = 3); a
+// radicand is taken at a beat's last clock, one per beat, and the result
+// is handed to the skid buffer at one: latency 3 ceil(RESULT_BITS / 3) + 1
+// clocks, throughput one result per three clocks.
 // Handshake: valid/ready on both sides, a word moves when valid and ready
 // are both high at a rising edge. Every stage advances together on one
 // global enable, the skid buffer's registered ready; ready_o is that enable,
@@ -14,7 +19,8 @@
 module csgrt_sqrt #(
     parameter RESULT_BITS = 8,   // result bits = pipeline stages (>= 2)
     parameter USER_WIDTH  = 1,   // sideband carried alongside (>= 1)
-    parameter USER_OUT_REG = 0   // csgrt_sqrt_core's
+    parameter USER_OUT_REG = 0,  // csgrt_sqrt_core's
+    parameter II          = 1    // running clocks per result: 1, or 3 (csgrt_sqrt_core FOLD = 3)
 ) (
     input  wire                     clk_i,
     input  wire                     rst_ni,    // synchronous, active low
@@ -35,16 +41,25 @@ module csgrt_sqrt #(
     wire [RESULT_BITS-1:0] core_root;
     wire [USER_WIDTH-1:0]  core_user;
 
-    assign ready_o = en;
+    // the beat (II = 1: adv = en, every running clock); ready_o is the
+    // advance from a register of its own, as csgrt_isect's
+    wire       en_next;   // en after the next rising edge
+    wire [1:0] phase;
+    wire       last, adv;
+    csgrt_beat #(.II(II)) u_beat (.clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en), .ce_next_i(en_next),
+                                  .phase_o(phase), .last_o(last), .adv_o(adv), .adv_q_o(ready_o));
 
     csgrt_sqrt_core #(
         .RESULT_BITS(RESULT_BITS),
         .USER_WIDTH (USER_WIDTH),
-        .USER_OUT_REG(USER_OUT_REG)
+        .USER_OUT_REG(USER_OUT_REG),
+        .FOLD       (II)
     ) u_core (
         .clk_i  (clk_i),
         .rst_ni (rst_ni),
-        .ce_i   (en),
+        .ce_i   (adv),
+        .run_i  (en),
+        .phase_i(phase),
         .valid_i(valid_i),
         .n_i    (n_i),
         .user_i (user_i),
@@ -53,15 +68,14 @@ module csgrt_sqrt #(
         .user_o (core_user)
     );
 
-    wire unused_en_next;   // no beat here
     csgrt_skid #(
         .WIDTH(RESULT_BITS + USER_WIDTH)
     ) u_skid (
         .clk_i  (clk_i),
         .rst_ni (rst_ni),
-        .valid_i(core_valid),
+        .valid_i(core_valid && last),
         .ready_o(en),
-        .ready_next_o(unused_en_next),
+        .ready_next_o(en_next),
         .data_i ({core_user, core_root}),
         .valid_o(valid_o),
         .ready_i(ready_i),

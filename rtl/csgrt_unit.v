@@ -104,7 +104,7 @@ module csgrt_unit #(
     wire [SQ-1:0] q_root;
     wire [MW-1:0] q_side;
     csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(MW)) u_sqrt (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(s_valid_q),
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(1'b0), .phase_i(2'd0), .valid_i(s_valid_q),
         .n_i(s_n_q), .user_i(s_side_q), .valid_o(q_valid), .root_o(q_root), .user_o(q_side));
 
     // ---- P: L = root + 1, numerators ------------------------------------------------------
@@ -148,7 +148,7 @@ module csgrt_unit #(
             wire          dq_neg, dq_ovf, unused_dv, unused_du;
             wire [QB-1:0] dq_mag;
             csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .run_i(1'b0), .phase_i(2'd0), .valid_i(1'b0),
                 .num_i(num_sel), .den_i(p_len_q), .user_i(1'b0),
                 .valid_o(unused_dv), .quot_o(dq_mag), .neg_o(dq_neg), .ovf_o(dq_ovf), .user_o(unused_du));
             wire unused_dq_ovf = dq_ovf;   // |v_i| < L: never overflows
@@ -186,14 +186,14 @@ module csgrt_unit #(
         for (i = 0; i < 3; i = i + 1) begin : g_div
             if (i == 0) begin : g_main
                 csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(DUW)) u_div (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p_valid_q),
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(1'b0), .phase_i(2'd0), .valid_i(p_valid_q),
                     .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(p_user_q),
                     .valid_o(d_valid), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
                     .user_o(d_user));
             end else begin : g_other
                 wire unused_v, unused_u;
                 csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
-                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p_valid_q),
+                    .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(1'b0), .phase_i(2'd0), .valid_i(p_valid_q),
                     .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(1'b0),
                     .valid_o(unused_v), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
                     .user_o(unused_u));

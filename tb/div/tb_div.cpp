@@ -6,6 +6,9 @@
 // around the overflow boundary and the extreme values, plus random operands
 // of random bit lengths (1,000,000 for l). Random gaps and back-pressure;
 // a back-to-back run checks latency QUOT_BITS + 2 and full throughput.
+// Configs x3 and l3: x and l with II = 3 (csgrt_div_core FOLD = 3), every
+// operand pair of x3, corners and 200,000 random pairs of l3; latency
+// 3 (ceil(QUOT_BITS / 3) + 1) + 1 and one result per three clocks.
 #include "Vtb_div.h"
 #include "fixed.h"
 #include "stream.h"
@@ -55,6 +58,8 @@ std::string check(const Op& op, int qb, int64_t quot, bool ovf, bool neg, uint16
 DIV_PORTS(x, 10, 8, 5)
 DIV_PORTS(m, 28, 17, 10)
 DIV_PORTS(l, 52, 29, 22)
+DIV_PORTS(x3, 10, 8, 5)
+DIV_PORTS(l3, 52, 29, 22)
 
 int64_t smin(int w) { return -(int64_t(1) << (w - 1)); }
 int64_t smax(int w) { return (int64_t(1) << (w - 1)) - 1; }
@@ -146,6 +151,40 @@ TEST(Div, Random_52_29_22) {
     auto r = run_l(h.top.get(), in, 0.25, 0.25, tb::seed(17));
     EXPECT_TRUE(r.ok()) << r.summary();
     std::printf("div 52/29/22: %s (%zu overflowing)\n", r.summary().c_str(), ovf);
+}
+
+TEST(Div, FoldedExhaustive_10_8_5) {
+    std::vector<Op> in;
+    for (int64_t n = smin(10); n <= smax(10); ++n)
+        for (int64_t d = smin(8); d <= smax(8); ++d) in.push_back({n, d});
+    tb::Harness<Top> h;
+    auto r = run_x3(h.top.get(), in, 0.3, 0.3, tb::seed(18));
+    EXPECT_TRUE(r.ok()) << r.summary();
+    std::printf("div 10/8/5 II=3: %s\n", r.summary().c_str());
+}
+
+TEST(Div, FoldedLatencyAndThroughput) {
+    tb::Harness<Top> h;
+    auto in = randoms(NW_l3, DW_l3, QB_l3, 1000, 19);
+    auto r = run_l3(h.top.get(), in, 0.0, 0.0, 20);
+    EXPECT_TRUE(r.ok()) << r.summary();
+    // taken at a beat's last clock, ceil(22 / 3) + 1 = 9 beats of three
+    // clocks to the skid buffer, and its clock
+    const int latency = 3 * ((QB_l3 + 2) / 3 + 1) + 1;
+    EXPECT_EQ(r.min_latency, latency);
+    EXPECT_EQ(r.max_latency, latency);
+    EXPECT_LE(r.cycles, 3 * in.size() + latency + 2 + 201);
+    EXPECT_GE(r.cycles, 3 * in.size());
+}
+
+TEST(Div, FoldedRandom_52_29_22) {
+    auto in = corners(NW_l3, DW_l3, QB_l3);
+    auto rnd = randoms(NW_l3, DW_l3, QB_l3, size_t(200000 * tb::scale()), tb::seed(21));
+    in.insert(in.end(), rnd.begin(), rnd.end());
+    tb::Harness<Top> h;
+    auto r = run_l3(h.top.get(), in, 0.25, 0.25, tb::seed(22));
+    EXPECT_TRUE(r.ok()) << r.summary();
+    std::printf("div 52/29/22 II=3: %s\n", r.summary().c_str());
 }
 
 }  // namespace

@@ -386,12 +386,15 @@ void run_width(size_t count, double gap, double stall, uint64_t seed, bool check
         // II = 1: 2F+23 clocks, 2F+22 stages and the skid, and 3 more
         // above 18 bits (P0, P2, P4's tile registers). II = 3: the
         // same stages less one in each of P0, P2, P4 (two beats where
-        // II = 1 takes three clocks) plus the input register, 2F+20
-        // beats of three clocks (the pair is taken at a beat's last clock
-        // and handed to the skid at one), and the skid's clock:
-        // 3 (2F+20) + 1
+        // II = 1 takes three clocks) plus the input register, with the
+        // square root's F+6 stages and the dividers' F+1 iteration
+        // stages folded three result bits to a stage: 13 + ceil((F+6)/3)
+        // + ceil((F+1)/3) beats of three clocks (the pair is taken at a
+        // beat's last clock and handed to the skid at one), and the
+        // skid's clock
         const int F = NB - 3;
-        const int latency = II == 1 ? 2 * F + 23 + (NB > 18 ? 3 : 0) : 3 * (2 * F + 20) + 1;
+        const int beats = 13 + (F + 6 + 2) / 3 + (F + 1 + 2) / 3;
+        const int latency = II == 1 ? 2 * F + 23 + (NB > 18 ? 3 : 0) : 3 * beats + 1;
         EXPECT_EQ(r.min_latency, latency);
         EXPECT_EQ(r.max_latency, latency);
         EXPECT_LE(r.cycles, size_t(II) * cases.size() + size_t(latency) + 2 + 201);
