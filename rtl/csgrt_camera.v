@@ -26,7 +26,8 @@
 // ray per clock. Multipliers: 3 (VW x VW, VW = F+8 = B+5).
 // II = 3 (csgrt_top's SHARE_II; csgrt_beat): a ray every third clock, every
 // register moving on the beat's advance, csgrt_unit's squares on one
-// multiplier and its divisions on one divider; the rays still leave in
+// multiplier, its divisions on one divider and its square root three
+// result bits per stage (ceil((F+8)/3) stages); the rays still leave in
 // raster order (the intersection unit takes a ray per candidate leaf and
 // clock, so the camera only limits scenes with fewer than three leaves).
 // Handshake: m_valid_o/m_ready_i; a ray moves when both are high at a

@@ -69,10 +69,11 @@
 // II = 3 (time-shared, csgrt_beat): every stage moves once every three
 // running clocks, and the products of a stage (its three axes or channels,
 // or the power step's two) share one multiplier (csgrt_mul_vec), the unit
-// vectors' divisions one divider (csgrt_unit): 25 csgrt_mul (11 without the
+// vectors' divisions one divider and their square roots three result bits
+// per stage (csgrt_unit): 25 csgrt_mul (11 without the
 // specular unit), 2 csgrt_div_core instead of 6; a pixel or light item
 // every third clock; the input is registered first (the shared A0
-// multiplier reads it for a whole beat); latency 322 clocks (BITS any,
+// multiplier reads it for a whole beat); latency 256 clocks (BITS any,
 // one light, no back-pressure). A stage then has a whole beat for its
 // logic, which nextpnr times as one clock: the longer add stages (A3, A11,
 // B9, B13, C4) and B1's light choice are split by a register in mid-beat

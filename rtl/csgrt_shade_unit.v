@@ -7,8 +7,9 @@
 // A thin wrapper of csgrt_unit (FRAC 15, SQRT_STAGES 17), which has the
 // pipeline: M (2) squares, S (1) sum, Q (17) square root, P (1) L = root + 1,
 // D (17) divisions, O (1) signed output.
-// Latency: 39 clocks, counted in enabled clocks (II = 3: 39 beats of
-// three clocks, the squares on one multiplier). Handshake: none (the
+// Latency: 39 clocks, counted in enabled clocks (II = 3: 18 beats of
+// three clocks, the squares on one multiplier, the divisions on one
+// divider, the square root three result bits per stage: csgrt_unit). Handshake: none (the
 // enclosing pipeline's global stall ce_i). Multipliers: 3 (II = 3: 1).
 module csgrt_shade_unit #(
     parameter VW         = 18,   // signed width of v_i (<= 18 keeps 18x18 multipliers)

@@ -157,7 +157,9 @@
 // move once every three clocks (csgrt_beat) and X, Y and U2's squares
 // serve their three axes in turn on one multiplier each (csgrt_mul_vec):
 // 6 csgrt_mul fewer (REFRACTION 1; 4 with REFRACTION 0), a child every
-// third clock, the children's 2F+19 stages three times as long.
+// third clock, the children's 2F+19 stages three times as long, but for
+// U2's F+8-bit square root, which finds three result bits per stage
+// (csgrt_unit: ceil((F+8)/3) stages) and its divisions (on one divider).
 // yosys 0.23 synth_ecp5 of this module alone, MAX_LIGHTS 8, USER_WIDTH 1,
 // BITS 16, (REFLECTION, REFRACTION) with SHADOWS 1:
 //   (1, 1): MULT18X18D 39, LUT4 17.7k + CCU2C 3.4k, FF 9.5k, DPR16X4 246, DP16KD 3

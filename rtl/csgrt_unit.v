@@ -26,7 +26,11 @@
 // running on every clock, fed axis k at phase k, its quotients gathered
 // as csgrt_mul_vec gathers products (csgrt_beat_gather; the divider's
 // FRAC+2 clocks padded by 0 to 2 registers to 2 mod 3: D takes
-// (FRAC+2+pad+4)/3 beats, 7 for FRAC 15). Multipliers: 1; dividers: 1.
+// (FRAC+2+pad+4)/3 beats, 7 for FRAC 15); the square root finds three
+// result bits per stage, one per running clock (csgrt_sqrt_core FOLD = 3):
+// Q takes ceil(SQRT_STAGES/3) beats (6 for 17 stages). Latency
+// ceil(SQRT_STAGES/3) + (FRAC+2+pad+4)/3 + 5 beats (shading: 18).
+// Multipliers: 1; dividers: 1.
 // Users: csgrt_shade_unit (shading, FRAC 15, 17 stages), csgrt_spawn
 // (normals and secondary-ray directions, FRAC F, F+8 stages).
 module csgrt_unit #(
@@ -103,8 +107,9 @@ module csgrt_unit #(
     wire          q_valid;
     wire [SQ-1:0] q_root;
     wire [MW-1:0] q_side;
-    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(MW)) u_sqrt (
-        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(1'b0), .phase_i(2'd0), .valid_i(s_valid_q),
+    // II = 3: three result bits per stage, one per running clock (FOLD)
+    csgrt_sqrt_core #(.RESULT_BITS(SQ), .USER_WIDTH(MW), .FOLD(II)) u_sqrt (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(ce_i), .phase_i(phase_i), .valid_i(s_valid_q),
         .n_i(s_n_q), .user_i(s_side_q), .valid_o(q_valid), .root_o(q_root), .user_o(q_side));
 
     // ---- P: L = root + 1, numerators ------------------------------------------------------

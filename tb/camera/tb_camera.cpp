@@ -203,10 +203,11 @@ void check_scene(const std::string& name, int w, int h, double p_stall, uint64_t
             // one ray per clock: the last ray leaves n - 1 clocks after the first (+ 200 drain clocks)
             EXPECT_EQ(r.cycles, uint64_t(2 * F + 19) + uint64_t(w) * h - 1 + 200) << s.str();
         } else {
-            // II = 3: G, R and csgrt_unit's stages (its division in (F+2+pad+4)/3 beats) take
-            // three clocks each, the skid one; then a ray every third clock
+            // II = 3: G, R and csgrt_unit's stages (its division in (F+2+pad+4)/3 beats, its
+            // F+8-bit square root in ceil((F+8)/3), three result bits a stage) take three
+            // clocks each, the skid one; then a ray every third clock
             const int div_beats = (F + 2 + (5 - (F + 2) % 3) % 3 + 4) / 3;
-            const int beats = 2 + (F + 8) + 5 + div_beats;
+            const int beats = 2 + (F + 8 + 2) / 3 + 5 + div_beats;
             EXPECT_GE(r.first_latency, 3 * beats) << s.str();
             EXPECT_LE(r.first_latency, 3 * beats + 3) << s.str();
             EXPECT_EQ(r.cycles, uint64_t(r.first_latency) + 3 * (uint64_t(w) * h - 1) + 200) << s.str();

@@ -702,10 +702,12 @@ void throughput(bool reflection = true, bool refraction = true) {
     const int latency = refraction ? 5 * F + 65 : 4 * F + 59, hold = refraction ? 3 * F + 45 : 2 * F + 39;
     // the children's stages before the output skid: C0, X, C3 and U2 (2F+19
     // clocks); time-shared, U2's three divisions on one divider take
-    // (F+2+pad+4)/3 beats instead of F+2 (rtl/csgrt_unit.v)
+    // (F+2+pad+4)/3 beats instead of F+2 and its F+8-bit square root
+    // ceil((F+8)/3) instead of F+8 (rtl/csgrt_unit.v)
     const int child_clocks = 2 * F + 19;
     const int div_beats = (F + 2 + (5 - (F + 2) % 3) % 3 + 4) / 3;
-    const int child_stages = ii == 3 ? child_clocks - (F + 2) + div_beats : child_clocks;
+    const int sqrt_beats = (F + 8 + 2) / 3;
+    const int child_stages = ii == 3 ? child_clocks - (F + 2) + div_beats - (F + 8) + sqrt_beats : child_clocks;
     std::mt19937_64 rng(77);
     const std::vector<V3> lights = random_lights(fmt, rng);
     for (int per_hit : {1, 2, 3, 4, 5, 11}) {
