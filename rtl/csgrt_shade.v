@@ -628,25 +628,31 @@ module csgrt_shade #(
             // stage k: res = bit k ? rnd(res * base, SF) : res; base = rnd(base^2, SF)
             localparam NPOW = 10;
             localparam PPW  = 2 * NDW;
+            // The stages compute on res, base and one exponent bit each;
+            // the rest of the item ({enables, ndl, x}, PSDW bits) waits
+            // for B10 in one RAM delay line of the stages' 2 NPOW advances
+            // (csgrt_delay_ram; 20 copies of it in flip-flops were 4,780
+            // of csgrt_shade's registers at BITS 24), its valid bit and the
+            // exponent's bits riding along the stages.
             wire [(NPOW+1)*NDW-1:0]  pw_res, pw_base;
-            wire [(NPOW+1)*PSDW-1:0] pw_side;
+            wire [(NPOW+1)*NPOW-1:0] pw_exp;
             wire [NPOW:0]            pw_valid;
+            wire [PSDW-1:0]          b9_side = {b9_sen_q, b9_den_q, b9_ndl_q, b9_x_q};
             assign pw_res[0 +: NDW]    = {{(NDW-16){1'b0}}, 1'b1, 15'd0};   // 1.0
             assign pw_base[0 +: NDW]   = b9_cr_q;
-            assign pw_side[0 +: PSDW]  = {b9_sen_q, b9_den_q, b9_ndl_q, b9_x_q};
+            assign pw_exp[0 +: NPOW]   = b9_x_q[48 + PX_PHS +: NPOW];   // pix's exponent bits
             assign pw_valid[0]         = b9_valid_q;
             for (i = 0; i < NPOW; i = i + 1) begin : g_pow
                 wire [NDW-1:0]  res_in  = pw_res[i*NDW +: NDW];
                 wire [NDW-1:0]  base_in = pw_base[i*NDW +: NDW];
                 wire [NDW-1:0]  res_dly;
-                wire [PSDW-1:0] side_dly;
+                wire [NPOW-1:0] exp_dly;
                 wire [NDW-1:0]  base_dly;
-                csgrt_delay #(.WIDTH(PSDW + 2 * NDW), .STAGES(2)) u_dly (
+                csgrt_delay #(.WIDTH(NPOW + 2 * NDW), .STAGES(2)) u_dly (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(pw_valid[i]),
-                    .data_i({pw_side[i*PSDW +: PSDW], base_in, res_in}), .valid_o(pw_valid[i+1]),
-                    .data_o({side_dly, base_dly, res_dly}));
-                wire [PIXW-1:0] pix = side_dly[48 +: PIXW];
-                wire            bit_k = pix[PX_PHS + i];
+                    .data_i({pw_exp[i*NPOW +: NPOW], base_in, res_in}), .valid_o(pw_valid[i+1]),
+                    .data_o({exp_dly, base_dly, res_dly}));
+                wire            bit_k = exp_dly[i];
                 // the stage's products, {base^2, res base}, on one
                 // csgrt_mul_vec: stage 0 multiplies the result by 1.0, which
                 // is exact (res = base), and the square after the last
@@ -682,15 +688,18 @@ module csgrt_shade #(
                     wire unused_pbr = ^{pbr[14:0], pbr[PPW-1:15+NDW]};
                     assign pw_base[(i+1)*NDW +: NDW] = pbr[15 +: NDW];
                 end
-                assign pw_side[(i+1)*PSDW +: PSDW] = side_dly;
+                assign pw_exp[(i+1)*NPOW +: NPOW] = exp_dly;
                 if (i != 0 && i != NPOW - 1) begin : g_mid
                     wire unused_bd = ^base_dly;
                 end
             end
             wire [NDW-1:0]  b10_pw    = pw_res[NPOW*NDW +: NDW];
-            wire [PSDW-1:0] b10_side  = pw_side[NPOW*PSDW +: PSDW];
+            wire [PSDW-1:0] b10_side;
+            // ends in a fabric register: B11's multiplier reads it (OUT_REG)
+            csgrt_delay_ram #(.WIDTH(PSDW), .STAGES(2 * NPOW), .OUT_REG(1)) u_dly_side (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .data_i(b9_side), .data_o(b10_side));
             wire            b10_valid = pw_valid[NPOW];
-            wire unused_pw_base = ^pw_base[NPOW*NDW +: NDW];
+            wire unused_pw_base = ^{pw_base[NPOW*NDW +: NDW], pw_exp[NPOW*NPOW +: NPOW]};
             wire [PIXW-1:0] b10_pix   = b10_side[48 +: PIXW];
             wire unused_b10_pix = ^{b10_pix[PIXW-1:PX_PH+16], b10_pix[PX_PH-1:0]};
 
