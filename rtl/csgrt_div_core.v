@@ -110,8 +110,6 @@ module csgrt_div_core #(
         end
     end
 
-    wire unused_fold = ^{run_i, phase_i};   // FOLD = 1 has no use for them
-
     genvar k;
     generate
         for (k = 0; k < NS; k = k + 1) begin : g_stage
@@ -140,26 +138,10 @@ module csgrt_div_core #(
             wire take_prev;   // this clock's step starts from the previous stage's item
             wire step;        // this clock takes a step
             wire lo_bit;
-            if (FOLD == 1) begin : g_one
-                localparam I = QB - 1 - k;   // quotient bit found by this stage
-                assign take_prev = 1'b1;
-                assign step      = ce_i;
-                assign lo_bit    = side_in[DW + I];
-            end else begin : g_three
-                // quotient bits I0 (at the advance), I1, I2 (phases 0 and
-                // 1); a step past bit 0 (LIVE1/LIVE2 = 0) is not taken
-                localparam J0    = FOLD * k;
-                localparam LIVE1 = (J0 + 1 < QB) ? 1 : 0;
-                localparam LIVE2 = (J0 + 2 < QB) ? 1 : 0;
-                localparam I0    = QB - 1 - J0;
-                localparam I1    = LIVE1 ? QB - 2 - J0 : 0;
-                localparam I2    = LIVE2 ? QB - 3 - J0 : 0;
-                wire advance = (phase_i == 2'd2);
-                assign take_prev = advance;
-                assign step      = run_i && (advance || (phase_i[0] ? (LIVE2 == 1) : (LIVE1 == 1)));
-                assign lo_bit    = advance    ? side_in[DW + I0]
-                                 : phase_i[0] ? side_q[DW + I2] : side_q[DW + I1];
-            end
+            csgrt_fold_step #(.FOLD(FOLD), .STEPS(QB), .STAGE(k), .W(1)) u_sched (
+                .ce_i(ce_i), .run_i(run_i), .phase_i(phase_i),
+                .prev_bits_i(side_in[DW +: QB]), .own_bits_i(side_q[DW +: QB]),
+                .take_prev_o(take_prev), .step_o(step), .bits_o(lo_bit));
             wire [DW-1:0] rem_src  = take_prev ? rem_in  : rem_q;
             wire [QB-1:0] quot_src = take_prev ? quot_in : quot_q;
             wire [DW-1:0] ud_src   = take_prev ? side_in[DW-1:0] : side_q[DW-1:0];

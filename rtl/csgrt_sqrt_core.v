@@ -68,8 +68,6 @@ module csgrt_sqrt_core #(
         end
     end
 
-    wire unused_fold = ^{run_i, phase_i};   // FOLD = 1 has no use for them
-
     genvar k;
     generate
         for (k = 0; k < NS; k = k + 1) begin : g_stage
@@ -98,26 +96,9 @@ module csgrt_sqrt_core #(
             wire          take_prev;   // this clock's step starts from the previous stage's item
             wire          step;        // this clock takes a step
             wire [1:0]    n_bits;
-            if (FOLD == 1) begin : g_one
-                localparam I = R - 1 - k;   // result bit found by this stage
-                assign take_prev = 1'b1;
-                assign step      = ce_i;
-                assign n_bits    = n_in[2*I+1:2*I];
-            end else begin : g_three
-                // result bits I0 (at the advance), I1, I2 (phases 0 and 1);
-                // a step past bit 0 (LIVE1/LIVE2 = 0) is not taken
-                localparam J0    = FOLD * k;
-                localparam LIVE1 = (J0 + 1 < R) ? 1 : 0;
-                localparam LIVE2 = (J0 + 2 < R) ? 1 : 0;
-                localparam I0    = R - 1 - J0;
-                localparam I1    = LIVE1 ? R - 2 - J0 : 0;
-                localparam I2    = LIVE2 ? R - 3 - J0 : 0;
-                wire advance = (phase_i == 2'd2);
-                assign take_prev = advance;
-                assign step      = run_i && (advance || (phase_i[0] ? (LIVE2 == 1) : (LIVE1 == 1)));
-                assign n_bits    = advance    ? n_in[2*I0+1:2*I0]
-                                 : phase_i[0] ? n_q[2*I2+1:2*I2] : n_q[2*I1+1:2*I1];
-            end
+            csgrt_fold_step #(.FOLD(FOLD), .STEPS(R), .STAGE(k), .W(2)) u_sched (
+                .ce_i(ce_i), .run_i(run_i), .phase_i(phase_i), .prev_bits_i(n_in), .own_bits_i(n_q),
+                .take_prev_o(take_prev), .step_o(step), .bits_o(n_bits));
             wire [RW-1:0] rem_src  = take_prev ? rem_in  : rem_q;
             wire [R-1:0]  root_src = take_prev ? root_in : root_q;
             // rem_src < 2^R: its two top bits are always zero
