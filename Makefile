@@ -170,7 +170,7 @@ SORT_INSERTS ?= 1
 # docs/architecture.md "Contexts"); a build with 1 gets the suffix ii1
 SHARE_II ?= 3
 # the intersection unit's clocks per ray-primitive pair (csgrt_top ISECT_II:
-# 1, or 3 on a third of its multipliers, for the FPGA's routing; 1.5 to 3
+# 1, or 3 on a third of its multipliers, for the FPGA's routing; 1.3 to 3
 # times the cycles on the effect scenes); a build with 3 gets the suffix x3
 ISECT_II ?= 1
 # pixels in flight in the ray tree (csgrt_top CONTEXTS, a power of two):
