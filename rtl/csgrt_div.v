@@ -15,8 +15,9 @@
 // 3 (ceil(QUOT_BITS / 3) + 1) + 1 clocks, throughput one result per three
 // clocks.
 // Handshake: as csgrt_sqrt: valid/ready on both sides; every stage advances
-// on one global enable, the skid buffer's registered ready, which is also
-// ready_o (a register output, no combinational path from ready_i).
+// on the beat's advance (II = 1: the skid buffer's registered ready), and
+// ready_o is that advance from a register of its own (csgrt_beat's
+// adv_q_o; no combinational path from ready_i).
 module csgrt_div #(
     parameter NUM_WIDTH  = 16,   // signed numerator width (> QUOT_BITS)
     parameter DEN_WIDTH  = 8,    // signed denominator width (>= 2)

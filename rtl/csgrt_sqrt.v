@@ -12,9 +12,10 @@
 // is handed to the skid buffer at one: latency 3 ceil(RESULT_BITS / 3) + 1
 // clocks, throughput one result per three clocks.
 // Handshake: valid/ready on both sides, a word moves when valid and ready
-// are both high at a rising edge. Every stage advances together on one
-// global enable, the skid buffer's registered ready; ready_o is that enable,
-// so it is a register output and never depends combinationally on ready_i.
+// are both high at a rising edge. Every stage advances together on the
+// beat's advance (csgrt_beat; II = 1: the skid buffer's registered ready);
+// ready_o is that advance from a register of its own (csgrt_beat's
+// adv_q_o), so it never depends combinationally on ready_i.
 // Nothing is lost or duplicated under any pattern of valid_i and ready_i.
 module csgrt_sqrt #(
     parameter RESULT_BITS = 8,   // result bits = pipeline stages (>= 2)
