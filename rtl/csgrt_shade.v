@@ -169,6 +169,28 @@ module csgrt_shade #(
     localparam PIXW = 10 + 16 * 3 + 48 + 1 + 24;
     localparam PX_HIT = 24, PX_RGB = 25, PX_AMB = 73, PX_DIF = 89, PX_PH = 105,
                PX_PHS = 121;
+    // The pixel's side data rides along both segments but is read only at
+    // their ends, so it waits in RAM delay lines (csgrt_delay_ram, block
+    // RAM) instead of a register copy per stage (about 30 of them: 3.5 k
+    // flip-flops): segment A's whole (PIXW bits, input to skid A); in
+    // segment B the part that segment C reads, {diffuse, ambient, rgb, hit,
+    // y, x} (PXCW bits, the low ones), from B1 to C0, while {phong_size,
+    // phong} (PXPW bits), which B9 to B11 read, rides with the item. The
+    // lines' lengths are the segments' stage counts in advances, with
+    // csgrt_unit's latency (the unit vectors' M, S, Q, P, D, O: its
+    // header) for A4..A9 and B2..B7.
+    localparam PXCW = PX_PH;           // {diffuse, ambient, rgb, hit, y, x}
+    localparam PXPW = PIXW - PX_PH;    // {phong_size, phong}
+    localparam U_SQ   = 17;            // csgrt_shade_unit's square-root stages
+    localparam U_FRAC = 15;            // and fraction bits
+    localparam U_DL   = U_FRAC + 2;    // csgrt_unit's csgrt_div_core latency (quotient bits + 1)
+    localparam U_PAD  = (5 - (U_DL % 3)) % 3;
+    localparam UNIT_LAT = (II == 1) ? U_SQ + U_FRAC + 7
+                                    : (U_SQ + 2) / 3 + (U_DL + U_PAD + 4) / 3 + 5;
+    // A: u_in (II = 3), A0 2, A1, A2 2, A3, the unit, A10 2, A11, A12 2
+    localparam A_PIX_LAT = (II == 1 ? 0 : 1) + 11 + UNIT_LAT;
+    // B: B1, the unit, B8 2, B9, B10 and B11 (22 with the specular unit), B12 2, C0
+    localparam B_PIX_LAT = 7 + UNIT_LAT + (SPECULAR != 0 ? 22 : 0);
 
     wire en_a;   // segment A runs: skid A's ready
     wire en_b;   // segments B and C run: the output skid's ready
@@ -196,14 +218,14 @@ module csgrt_shade #(
     // ---- input: II = 3 registers the pixel, whose t and d the shared A0
     // multiplier reads for a whole beat (II = 1: straight through) -----------
     wire [PIXW-1:0] s_pix = {s_phong_size_i, s_phong_i, s_diffuse_i, s_ambient_i, s_rgb_i, s_hit_i, s_y_i, s_x_i};
-    localparam A0W = PIXW + 15 * B;
+    localparam A0W = 15 * B;
     wire unused_q = ^s_coef_i[9*B +: B];   // the constant term does not enter the gradient
     wire           in_valid;
-    wire [A0W-1:0] in_side;   // {pix, coef (9), d, o}
+    wire [A0W-1:0] in_side;   // {coef (9), d, o}
     wire [TW-1:0]  in_t;
     csgrt_delay #(.WIDTH(A0W + TW), .STAGES(II == 1 ? 0 : 1)) u_in (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .valid_i(s_valid_i),
-        .data_i({s_pix, s_coef_i[0 +: 9*B], s_d_i, s_o_i, s_t_i}), .valid_o(in_valid), .data_o({in_side, in_t}));
+        .data_i({s_coef_i[0 +: 9*B], s_d_i, s_o_i, s_t_i}), .valid_o(in_valid), .data_o({in_side, in_t}));
 
     // ---- A0: t d_i ---------------------------------------------------------
     wire [3*(TW+B)-1:0] td;
@@ -218,7 +240,10 @@ module csgrt_shade #(
     wire [3*B-1:0]  a0_o    = a0_side[0 +: 3*B];
     wire [3*B-1:0]  a0_d    = a0_side[3*B +: 3*B];
     wire [9*B-1:0]  a0_coef = a0_side[6*B +: 9*B];
-    wire [PIXW-1:0] a0_pix  = a0_side[15*B +: PIXW];
+    // the pixel's side data, from the input to skid A in one RAM line
+    wire [PIXW-1:0] a12_pix;
+    csgrt_delay_ram #(.WIDTH(PIXW), .STAGES(A_PIX_LAT), .OUT_REG(1)) u_dly_pix_a (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .data_i(s_pix), .data_o(a12_pix));
 
     // ---- A1: hit point and the shading copies --------------------------------
     localparam PW = B + 2;   // p = o + rnd(t d, F), exact (|p| < 6)
@@ -246,7 +271,6 @@ module csgrt_shade #(
     reg [3*PSW-1:0]  a1_ps_q;
     reg [3*DSW-1:0]  a1_ds_q;
     reg [9*KSW-1:0]  a1_ks_q;
-    reg [PIXW-1:0]   a1_pix_q;
     always @(posedge clk_i) begin
         if (!rst_ni) a1_valid_q <= 1'b0;
         else if (adv_a) a1_valid_q <= a0_valid;
@@ -254,7 +278,6 @@ module csgrt_shade #(
             a1_ps_q  <= ps_d;
             a1_ds_q  <= ds_d;
             a1_ks_q  <= ks_d;
-            a1_pix_q <= a0_pix;
         end
     end
 
@@ -274,16 +297,15 @@ module csgrt_shade #(
                 .a_i(ks_row), .b_i(a1_ps_q), .p_o(gp[3*i*GPW +: 3*GPW]));
         end
     endgenerate
-    localparam A2W = PIXW + 3 * PSW + 3 * DSW + 3 * KSW;
+    localparam A2W = 3 * PSW + 3 * DSW + 3 * KSW;
     wire           a2_valid;
     wire [A2W-1:0] a2_side;
     csgrt_delay #(.WIDTH(A2W), .STAGES(2)) u_dly_a2 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .valid_i(a1_valid_q),
-        .data_i({a1_pix_q, a1_ks_q[6*KSW +: 3*KSW], a1_ds_q, a1_ps_q}), .valid_o(a2_valid), .data_o(a2_side));
+        .data_i({a1_ks_q[6*KSW +: 3*KSW], a1_ds_q, a1_ps_q}), .valid_o(a2_valid), .data_o(a2_side));
     localparam PDW = 3 * PSW + 3 * DSW;   // {ds, ps}
     wire [3*KSW-1:0] a2_kp  = a2_side[PDW +: 3*KSW];
     wire [PDW-1:0]   a2_pd  = a2_side[0 +: PDW];
-    wire [PIXW-1:0]  a2_pix = a2_side[PDW+3*KSW +: PIXW];
 
     // ---- A3: g = rnd(A ps + ks.p << PF, SF) ----------------------------------
     localparam GSW = GPW + 3;   // exact sum
@@ -308,25 +330,23 @@ module csgrt_shade #(
     reg             a3_valid_q;
     reg [3*GW-1:0]  a3_g_q;
     reg [PDW-1:0]   a3_pd_q;
-    reg [PIXW-1:0]  a3_pix_q;
     always @(posedge clk_i) begin
         if (!rst_ni) a3_valid_q <= 1'b0;
         else if (adv_a) a3_valid_q <= a2_valid;
         if (adv_a) begin
             a3_g_q   <= g_d;
             a3_pd_q  <= a2_pd;
-            a3_pix_q <= a2_pix;
         end
     end
 
     // ---- A4..A9: n = unit(g) -------------------------------------------------
-    localparam A4W = PIXW + PDW;
+    localparam A4W = PDW;
     wire             a9_valid;
     wire [3*NVW-1:0] a9_n;
     wire [A4W-1:0]   a9_side;
     csgrt_shade_unit #(.VW(GW), .USER_WIDTH(A4W), .II(II)) u_unit_n (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .adv_i(adv_a), .phase_i(ph_a), .valid_i(a3_valid_q),
-        .v_i(a3_g_q), .user_i({a3_pix_q, a3_pd_q}),
+        .v_i(a3_g_q), .user_i(a3_pd_q),
         .valid_o(a9_valid), .u_o(a9_n), .user_o(a9_side));
     wire [3*DSW-1:0] a9_ds = a9_side[3*PSW +: 3*DSW];
 
@@ -386,7 +406,6 @@ module csgrt_shade #(
         .data_i({a11_side_q, a11_n_q}), .valid_o(a12_valid), .data_o({a12_side, a12_n}));
     wire [3*PSW-1:0] a12_ps  = a12_side[0 +: 3*PSW];
     wire [3*DSW-1:0] a12_ds  = a12_side[3*PSW +: 3*DSW];
-    wire [PIXW-1:0]  a12_pix = a12_side[PDW +: PIXW];
     wire [RXW-1:0]   r_d;
     generate
         if (SPECULAR != 0) begin : g_a12
@@ -524,8 +543,9 @@ module csgrt_shade #(
             assign lv_d[i*GW +: GW] = lpa_cut[i*PSW +: PSW] - sq_ps[i*PSW +: PSW];
         end
     endgenerate
-    // item flags: {use, last, first}
-    localparam XBW = 48 + 3 * NVW + RXW + PIXW + 3;
+    // item flags: {use, last, first}; of the pixel's side data only
+    // {phong_size, phong} (the rest waits in u_dly_pix_b)
+    localparam XBW = 48 + 3 * NVW + RXW + PXPW + 3;
     reg             b1_valid_q;
     reg [3*GW-1:0]  b1_lv_q;
     reg [XBW-1:0]   b1_x_q;
@@ -534,7 +554,7 @@ module csgrt_shade #(
         else if (adv_b) b1_valid_q <= ska_valid;
         if (adv_b) begin
             b1_lv_q <= lv_d;
-            b1_x_q  <= {sq_use, sq_last, (k_q == {KW_L{1'b0}}), sq_pix, sq_r, sq_n, lcol_d};
+            b1_x_q  <= {sq_use, sq_last, (k_q == {KW_L{1'b0}}), sq_pix[PX_PH +: PXPW], sq_r, sq_n, lcol_d};
         end
     end
 
@@ -549,8 +569,8 @@ module csgrt_shade #(
     wire [47:0]      b7_lcol = b7_x[0 +: 48];
     wire [3*NVW-1:0] b7_n    = b7_x[48 +: 3*NVW];
     wire [RXW-1:0]   b7_r    = b7_x[48+3*NVW +: RXW];
-    wire [PIXW-1:0]  b7_pix  = b7_x[48+3*NVW+RXW +: PIXW];
-    wire [2:0]       b7_fl   = b7_x[48+3*NVW+RXW+PIXW +: 3];
+    wire [PXPW-1:0]  b7_php  = b7_x[48+3*NVW+RXW +: PXPW];   // {phong_size, phong}
+    wire [2:0]       b7_fl   = b7_x[48+3*NVW+RXW+PXPW +: 3];
 
     // ---- B8: n_i l_i, r_i l_i ---------------------------------------------------
     localparam NLPW = 2 * NVW;     // 34
@@ -570,15 +590,14 @@ module csgrt_shade #(
             wire unused_r = ^b7_r;
         end
     endgenerate
-    localparam X2W = 48 + PIXW + 3;   // {flags, pix, lcol}
+    localparam X2W = 48 + PXPW + 3;   // {flags, {phong_size, phong}, lcol}
     wire           b8_valid;
     wire [X2W-1:0] b8_x;
     csgrt_delay #(.WIDTH(X2W), .STAGES(2)) u_dly_b8 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(b7_valid),
-        .data_i({b7_fl, b7_pix, b7_lcol}), .valid_o(b8_valid), .data_o(b8_x));
-    wire [PIXW-1:0] b8_pix = b8_x[48 +: PIXW];
-    wire unused_b8_pix = ^{b8_pix[PIXW-1:PX_PH+16], b8_pix[PX_PH-1:0]};
-    wire            b8_use = b8_x[48+PIXW+2];
+        .data_i({b7_fl, b7_php, b7_lcol}), .valid_o(b8_valid), .data_o(b8_x));
+    wire [15:0]     b8_ph  = b8_x[48 +: 16];   // phong
+    wire            b8_use = b8_x[48+PXPW+2];
 
     // ---- B9: ndl, cos_r and the enables -----------------------------------------
     localparam NLSW = NLPW + 2;
@@ -599,7 +618,7 @@ module csgrt_shade #(
     wire unused_b9 = ^{ndl_s[14:0], cr_s[14:0]};
     wire ndl_pos = !ndl_full[NLSW-16] && (ndl_full != {(NLSW-15){1'b0}});
     wire cr_pos  = !cr_full[RLSW-16] && (cr_full != {(RLSW-15){1'b0}});
-    wire ph_pos  = (b8_pix[PX_PH +: 16] != 16'd0);
+    wire ph_pos  = (b8_ph != 16'd0);
     reg            b9_valid_q;
     reg [NDW-1:0]  b9_ndl_q, b9_cr_q;
     reg            b9_den_q, b9_sen_q;
@@ -640,7 +659,7 @@ module csgrt_shade #(
             wire [PSDW-1:0]          b9_side = {b9_sen_q, b9_den_q, b9_ndl_q, b9_x_q};
             assign pw_res[0 +: NDW]    = {{(NDW-16){1'b0}}, 1'b1, 15'd0};   // 1.0
             assign pw_base[0 +: NDW]   = b9_cr_q;
-            assign pw_exp[0 +: NPOW]   = b9_x_q[48 + PX_PHS +: NPOW];   // pix's exponent bits
+            assign pw_exp[0 +: NPOW]   = b9_x_q[48 + PX_PHS - PX_PH +: NPOW];   // phong_size's bits
             assign pw_valid[0]         = b9_valid_q;
             for (i = 0; i < NPOW; i = i + 1) begin : g_pow
                 wire [NDW-1:0]  res_in  = pw_res[i*NDW +: NDW];
@@ -700,15 +719,14 @@ module csgrt_shade #(
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .data_i(b9_side), .data_o(b10_side));
             wire            b10_valid = pw_valid[NPOW];
             wire unused_pw_base = ^{pw_base[NPOW*NDW +: NDW], pw_exp[NPOW*NPOW +: NPOW]};
-            wire [PIXW-1:0] b10_pix   = b10_side[48 +: PIXW];
-            wire unused_b10_pix = ^{b10_pix[PIXW-1:PX_PH+16], b10_pix[PX_PH-1:0]};
+            wire [15:0]     b10_ph    = b10_side[48 +: 16];   // phong
 
             // ---- B11: ph = rnd(phong pw, SF) ----------------------------------------------
             localparam PHPW = 17 + NDW;   // 35
             wire [PHPW-1:0] php;
             csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(NDW), .N(1), .II(II)) u_mul_ph (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
-                .a_i({1'b0, b10_pix[PX_PH +: 16]}), .b_i(b10_pw), .p_o(php));
+                .a_i({1'b0, b10_ph}), .b_i(b10_pw), .p_o(php));
             csgrt_delay #(.WIDTH(PSDW), .STAGES(2)) u_dly_b11 (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(b10_valid),
                 .data_i(b10_side), .valid_o(b11_valid), .data_o(b11_side));
@@ -745,18 +763,17 @@ module csgrt_shade #(
     csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(NDW), .N(3), .II(II)) u_mul_b12d (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
         .a_i(b11_lc17), .b_i({3{b11_ndl}}), .p_o(ldp));
-    localparam X3W = 2 + PIXW + 3;   // {enables, flags, pix}
+    localparam X3W = 2 + 3;   // {enables, flags}
     wire           b12_valid;
     wire [X3W-1:0] b12_x;
     csgrt_delay #(.WIDTH(X3W), .STAGES(2)) u_dly_b12 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(b11_valid),
-        .data_i({b11_side[PSDW-1 -: 2], b11_side[48 +: PIXW + 3]}), .valid_o(b12_valid), .data_o(b12_x));
-    wire [PIXW-1:0] b12_pix   = b12_x[0 +: PIXW];
-    wire            b12_first = b12_x[PIXW];
-    wire            b12_last  = b12_x[PIXW+1];
-    wire            b12_den   = b12_x[PIXW+3];
-    wire            b12_sen   = b12_x[PIXW+4];
-    wire unused_b12 = b12_x[PIXW+2];
+        .data_i({b11_side[PSDW-1 -: 2], b11_side[48 + PXPW +: 3]}), .valid_o(b12_valid), .data_o(b12_x));
+    wire            b12_first = b12_x[0];
+    wire            b12_last  = b12_x[1];
+    wire            b12_den   = b12_x[3];
+    wire            b12_sen   = b12_x[4];
+    wire unused_b12 = ^{b12_x[2], b11_side[48 +: PXPW]};
 
     // ---- B13: accumulate per pixel ---------------------------------------------------
     reg [3*DAW-1:0] dacc_q;
@@ -783,7 +800,11 @@ module csgrt_shade #(
         end
     endgenerate
     reg              c0_valid_q;
-    reg [PIXW-1:0]   c0_pix_q;
+    // what segment C reads of the pixel, from B1 to here in one RAM line
+    // (every light item of a pixel writes it; C0 takes the last one's)
+    wire [PXCW-1:0]  c0_pix;
+    csgrt_delay_ram #(.WIDTH(PXCW), .STAGES(B_PIX_LAT), .OUT_REG(1)) u_dly_pix_b (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .data_i(sq_pix[0 +: PXCW]), .data_o(c0_pix));
     always @(posedge clk_i) begin
         if (!rst_ni) c0_valid_q <= 1'b0;
         else if (adv_b) c0_valid_q <= b12_valid && b12_last;
@@ -791,7 +812,6 @@ module csgrt_shade #(
             dacc_q <= dsum;
             sacc_q <= ssum;
         end
-        if (adv_b) c0_pix_q <= b12_pix;
     end
 
     // =========================================================================
@@ -802,13 +822,13 @@ module csgrt_shade #(
     wire [3*DDPW-1:0] ddp;
     csgrt_mul_vec #(.A_WIDTH(17), .B_WIDTH(DAW), .N(3), .II(II)) u_mul_c1 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
-        .a_i({3{1'b0, c0_pix_q[PX_DIF +: 16]}}), .b_i(dacc_q), .p_o(ddp));
+        .a_i({3{1'b0, c0_pix[PX_DIF +: 16]}}), .b_i(dacc_q), .p_o(ddp));
     wire             c1_valid;
-    wire [PIXW-1:0]  c1_pix;
+    wire [PXCW-1:0]  c1_pix;
     wire [3*SAW-1:0] c1_spec;
-    csgrt_delay #(.WIDTH(PIXW + 3 * SAW), .STAGES(2)) u_dly_c1 (
+    csgrt_delay #(.WIDTH(PXCW + 3 * SAW), .STAGES(2)) u_dly_c1 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(c0_valid_q),
-        .data_i({sacc_q, c0_pix_q}), .valid_o(c1_valid), .data_o({c1_spec, c1_pix}));
+        .data_i({sacc_q, c0_pix}), .valid_o(c1_valid), .data_o({c1_spec, c1_pix}));
 
     // ---- C2: intensity = ambient + rnd(diffuse diff_c, CF) -----------------------------
     wire [3*IW-1:0] int_d;
@@ -821,7 +841,7 @@ module csgrt_shade #(
     endgenerate
     reg              c2_valid_q;
     reg [3*IW-1:0]   c2_int_q;
-    reg [PIXW-1:0]   c2_pix_q;
+    reg [PXCW-1:0]   c2_pix_q;
     reg [3*SAW-1:0]  c2_spec_q;
     always @(posedge clk_i) begin
         if (!rst_ni) c2_valid_q <= 1'b0;
@@ -846,9 +866,9 @@ module csgrt_shade #(
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b),
         .a_i(c2_rgb17), .b_i(c2_int_q), .p_o(cp));
     wire             c3_valid;
-    wire [PIXW-1:0]  c3_pix;
+    wire [PXCW-1:0]  c3_pix;
     wire [3*SAW-1:0] c3_spec;
-    csgrt_delay #(.WIDTH(PIXW + 3 * SAW), .STAGES(2)) u_dly_c3 (
+    csgrt_delay #(.WIDTH(PXCW + 3 * SAW), .STAGES(2)) u_dly_c3 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b), .valid_i(c2_valid_q),
         .data_i({c2_spec_q, c2_pix_q}), .valid_o(c3_valid), .data_o({c3_spec, c3_pix}));
 
@@ -906,7 +926,7 @@ module csgrt_shade #(
                 c4_xy_q  <= c3_pix[0 +: 24];
             end
         end
-        wire unused_c3 = ^c3_pix[PIXW-1:25];
+        wire unused_c3 = ^c3_pix[PXCW-1:25];
 
         // ---- C5: sRGB tables ---------------------------------------------------------------
         wire [23:0] code;
