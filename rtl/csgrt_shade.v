@@ -297,15 +297,20 @@ module csgrt_shade #(
                 .a_i(ks_row), .b_i(a1_ps_q), .p_o(gp[3*i*GPW +: 3*GPW]));
         end
     endgenerate
-    localparam A2W = 3 * PSW + 3 * DSW + 3 * KSW;
+    localparam A2W = 3 * KSW;
     wire           a2_valid;
     wire [A2W-1:0] a2_side;
     csgrt_delay #(.WIDTH(A2W), .STAGES(2)) u_dly_a2 (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .valid_i(a1_valid_q),
-        .data_i({a1_ks_q[6*KSW +: 3*KSW], a1_ds_q, a1_ps_q}), .valid_o(a2_valid), .data_o(a2_side));
+        .data_i(a1_ks_q[6*KSW +: 3*KSW]), .valid_o(a2_valid), .data_o(a2_side));
+    wire [3*KSW-1:0] a2_kp  = a2_side;
+    // {ds, ps} wait for the unit vector n (A2 .. A9) in one RAM line rather
+    // than riding through A2, A3 and the unit's stages (csgrt_unit carries
+    // a sideband in flip-flops and two RAM lines of its own)
     localparam PDW = 3 * PSW + 3 * DSW;   // {ds, ps}
-    wire [3*KSW-1:0] a2_kp  = a2_side[PDW +: 3*KSW];
-    wire [PDW-1:0]   a2_pd  = a2_side[0 +: PDW];
+    wire [PDW-1:0]   a9_side;
+    csgrt_delay_ram #(.WIDTH(PDW), .STAGES(3 + UNIT_LAT), .OUT_REG(1)) u_dly_pd (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_a), .data_i({a1_ds_q, a1_ps_q}), .data_o(a9_side));
 
     // ---- A3: g = rnd(A ps + ks.p << PF, SF) ----------------------------------
     localparam GSW = GPW + 3;   // exact sum
@@ -329,13 +334,11 @@ module csgrt_shade #(
     endgenerate
     reg             a3_valid_q;
     reg [3*GW-1:0]  a3_g_q;
-    reg [PDW-1:0]   a3_pd_q;
     always @(posedge clk_i) begin
         if (!rst_ni) a3_valid_q <= 1'b0;
         else if (adv_a) a3_valid_q <= a2_valid;
         if (adv_a) begin
             a3_g_q   <= g_d;
-            a3_pd_q  <= a2_pd;
         end
     end
 
@@ -343,11 +346,12 @@ module csgrt_shade #(
     localparam A4W = PDW;
     wire             a9_valid;
     wire [3*NVW-1:0] a9_n;
-    wire [A4W-1:0]   a9_side;
-    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(A4W), .II(II)) u_unit_n (
+    wire             a9_user;   // nothing rides through the unit (u_dly_pd)
+    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(1), .II(II)) u_unit_n (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_a), .adv_i(adv_a), .phase_i(ph_a), .valid_i(a3_valid_q),
-        .v_i(a3_g_q), .user_i(a3_pd_q),
-        .valid_o(a9_valid), .u_o(a9_n), .user_o(a9_side));
+        .v_i(a3_g_q), .user_i(1'b0),
+        .valid_o(a9_valid), .u_o(a9_n), .user_o(a9_user));
+    wire unused_a9_user = a9_user;
     wire [3*DSW-1:0] a9_ds = a9_side[3*PSW +: 3*DSW];
 
     // ---- A10: n_i ds_i -------------------------------------------------------
@@ -548,24 +552,27 @@ module csgrt_shade #(
     localparam XBW = 48 + 3 * NVW + RXW + PXPW + 3;
     reg             b1_valid_q;
     reg [3*GW-1:0]  b1_lv_q;
-    reg [XBW-1:0]   b1_x_q;
     always @(posedge clk_i) begin
         if (!rst_ni) b1_valid_q <= 1'b0;
         else if (adv_b) b1_valid_q <= ska_valid;
-        if (adv_b) begin
-            b1_lv_q <= lv_d;
-            b1_x_q  <= {sq_use, sq_last, (k_q == {KW_L{1'b0}}), sq_pix[PX_PH +: PXPW], sq_r, sq_n, lcol_d};
-        end
+        if (adv_b) b1_lv_q <= lv_d;
     end
+    // the rest of the item waits for the unit vector l (B1 .. B7) in one
+    // RAM line rather than riding through B1 and the unit's stages
+    wire [XBW-1:0]   b7_x;
+    csgrt_delay_ram #(.WIDTH(XBW), .STAGES(1 + UNIT_LAT), .OUT_REG(1)) u_dly_xb (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_b),
+        .data_i({sq_use, sq_last, (k_q == {KW_L{1'b0}}), sq_pix[PX_PH +: PXPW], sq_r, sq_n, lcol_d}), .data_o(b7_x));
 
     // ---- B2..B7: l = unit(lv) ------------------------------------------------
     wire             b7_valid;
     wire [3*NVW-1:0] b7_l;
-    wire [XBW-1:0]   b7_x;
-    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(XBW), .II(II)) u_unit_l (
+    wire             b7_user;   // nothing rides through the unit (u_dly_xb)
+    csgrt_shade_unit #(.VW(GW), .USER_WIDTH(1), .II(II)) u_unit_l (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_b), .adv_i(adv_b), .phase_i(ph_b), .valid_i(b1_valid_q),
-        .v_i(b1_lv_q), .user_i(b1_x_q),
-        .valid_o(b7_valid), .u_o(b7_l), .user_o(b7_x));
+        .v_i(b1_lv_q), .user_i(1'b0),
+        .valid_o(b7_valid), .u_o(b7_l), .user_o(b7_user));
+    wire unused_b7_user = b7_user;
     wire [47:0]      b7_lcol = b7_x[0 +: 48];
     wire [3*NVW-1:0] b7_n    = b7_x[48 +: 3*NVW];
     wire [RXW-1:0]   b7_r    = b7_x[48+3*NVW +: RXW];
