@@ -139,6 +139,7 @@ module csgrt_div_core #(
             wire step;        // this clock takes a step
             wire lo_bit;
             csgrt_fold_step #(.FOLD(FOLD), .STEPS(QB), .STAGE(k), .W(1)) u_sched (
+                .clk_i(clk_i), .rst_ni(rst_ni),
                 .ce_i(ce_i), .run_i(run_i), .phase_i(phase_i),
                 .prev_bits_i(side_in[DW +: QB]), .own_bits_i(side_q[DW +: QB]),
                 .take_prev_o(take_prev), .step_o(step), .bits_o(lo_bit));

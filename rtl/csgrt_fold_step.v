@@ -13,15 +13,27 @@
 //     a beat: 3k at the beat's advance (phase 2) on the item it takes from
 //     the stage before, 3k+1 and 3k+2 at phases 0 and 1 on its own item.
 //     A step past the last (STEPS not a multiple of 3) is not taken.
-// Combinational. The caller's stage registers load the step's result when
-// step_o is high, computed from the previous stage's item when take_prev_o
-// is high and from their own otherwise.
+// Combinational but for FOLD = 3's copy of the phase: the caller's stage
+// registers load the step's result when step_o is high, computed from the
+// previous stage's item when take_prev_o is high and from their own
+// otherwise.
+// FOLD = 3 keeps a copy of the beat's phase register per stage (stepped as
+// csgrt_beat steps it: reset to 0, +1 mod 3 on every running clock) and
+// steers the stage from it: take_prev_o selects the stage's whole remainder
+// and operands (about 100 multiplexers in a 24-bit divider stage), and the
+// beat's one phase register with a decode behind it steered all stages of
+// every folded core, 1,686 loads in the 24-bit intersection unit: the
+// longest path of the netlist (tools/logic_depth.py 18.84 ns, 36.82 MHz
+// after placement at c657fc4). The copy is checked against phase_i in
+// simulation (csgrt_check_same).
 module csgrt_fold_step #(
     parameter FOLD  = 1,   // steps per stage: 1 or 3
     parameter STEPS = 8,   // steps of the whole operation (>= 1)
     parameter STAGE = 0,   // this stage's index, 0 .. ceil(STEPS / FOLD) - 1
     parameter W     = 1    // operand bits each step brings down (>= 1)
 ) (
+    input  wire               clk_i,
+    input  wire               rst_ni,       // synchronous, active low (FOLD = 3: the phase copy)
     input  wire               ce_i,         // the pipeline moves (FOLD = 3: the beat's advance)
     input  wire               run_i,        // FOLD = 3: a running clock of the beat
     input  wire [1:0]         phase_i,      // FOLD = 3: its phase (csgrt_beat's phase_o)
@@ -40,7 +52,7 @@ module csgrt_fold_step #(
             assign take_prev_o = 1'b1;
             assign step_o      = ce_i;
             assign bits_o      = prev_bits_i[I*W +: W];
-            wire unused_fold = ^{run_i, phase_i};
+            wire unused_fold = ^{clk_i, rst_ni, run_i, phase_i};
         end else begin : g_three
             // result bits I0 (at the advance), I1, I2 (phases 0 and 1);
             // a step past bit 0 (LIVE1/LIVE2 = 0) is not taken
@@ -50,11 +62,21 @@ module csgrt_fold_step #(
             localparam I0    = STEPS - 1 - J0;
             localparam I1    = LIVE1 ? STEPS - 2 - J0 : 0;
             localparam I2    = LIVE2 ? STEPS - 3 - J0 : 0;
-            wire advance = (phase_i == 2'd2);
+            // the stage's own copy of the phase; (* keep *): the copies of
+            // all stages have the same inputs, and yosys would merge them
+            // into one register again (opt_merge)
+            reg [1:0] ph_q;
+            (* keep *) always @(posedge clk_i) begin
+                if (!rst_ni) ph_q <= 2'd0;
+                else if (run_i) ph_q <= (ph_q == 2'd2) ? 2'd0 : ph_q + 2'd1;
+            end
+            csgrt_check_same #(.WIDTH(2), .WHAT("csgrt_fold_step's phase copy")) u_check_phase (
+                .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(ph_q), .orig_i(phase_i));
+            wire advance = (ph_q == 2'd2);
             assign take_prev_o = advance;
-            assign step_o      = run_i && (advance || (phase_i[0] ? (LIVE2 == 1) : (LIVE1 == 1)));
-            assign bits_o      = advance    ? prev_bits_i[I0*W +: W]
-                               : phase_i[0] ? own_bits_i[I2*W +: W] : own_bits_i[I1*W +: W];
+            assign step_o      = run_i && (advance || (ph_q[0] ? (LIVE2 == 1) : (LIVE1 == 1)));
+            assign bits_o      = advance ? prev_bits_i[I0*W +: W]
+                               : ph_q[0] ? own_bits_i[I2*W +: W] : own_bits_i[I1*W +: W];
             wire unused_ce = ce_i;   // the advance is run_i at phase 2
         end
 

@@ -97,6 +97,7 @@ module csgrt_sqrt_core #(
             wire          step;        // this clock takes a step
             wire [1:0]    n_bits;
             csgrt_fold_step #(.FOLD(FOLD), .STEPS(R), .STAGE(k), .W(2)) u_sched (
+                .clk_i(clk_i), .rst_ni(rst_ni),
                 .ce_i(ce_i), .run_i(run_i), .phase_i(phase_i), .prev_bits_i(n_in), .own_bits_i(n_q),
                 .take_prev_o(take_prev), .step_o(step), .bits_o(n_bits));
             wire [RW-1:0] rem_src  = take_prev ? rem_in  : rem_q;
