@@ -17,15 +17,15 @@
 // registers load the step's result when step_o is high, computed from the
 // previous stage's item when take_prev_o is high and from their own
 // otherwise.
-// FOLD = 3 keeps a copy of the beat's phase register per stage (stepped as
-// csgrt_beat steps it: reset to 0, +1 mod 3 on every running clock) and
-// steers the stage from it: take_prev_o selects the stage's whole remainder
-// and operands (about 100 multiplexers in a 24-bit divider stage), and the
-// beat's one phase register with a decode behind it steered all stages of
-// every folded core, 1,686 loads in the 24-bit intersection unit: the
-// longest path of the netlist (tools/logic_depth.py 18.84 ns, 36.82 MHz
-// after placement at c657fc4). The copy is checked against phase_i in
-// simulation (csgrt_check_same).
+// FOLD = 3 keeps a copy of the beat's phase register per stage, one-hot
+// (stepped as csgrt_beat steps it: reset to 0, +1 mod 3 on every running
+// clock), and steers the stage from it: take_prev_o selects the stage's
+// whole remainder and operands (about 100 multiplexers in a 24-bit divider
+// stage), and the beat's one phase register with a decode behind it
+// steered all stages of every folded core, 1,686 loads in the 24-bit
+// intersection unit: the longest path of the netlist (tools/logic_depth.py
+// 18.84 ns, 36.82 MHz after placement at c657fc4). The copy is checked
+// against phase_i in simulation (csgrt_check_same).
 module csgrt_fold_step #(
     parameter FOLD  = 1,   // steps per stage: 1 or 3
     parameter STEPS = 8,   // steps of the whole operation (>= 1)
@@ -62,21 +62,22 @@ module csgrt_fold_step #(
             localparam I0    = STEPS - 1 - J0;
             localparam I1    = LIVE1 ? STEPS - 2 - J0 : 0;
             localparam I2    = LIVE2 ? STEPS - 3 - J0 : 0;
-            // the stage's own copy of the phase; (* keep *): the copies of
-            // all stages have the same inputs, and yosys would merge them
-            // into one register again (opt_merge)
-            reg [1:0] ph_q;
+            // the stage's own copy of the phase, one-hot (bit k: phase k),
+            // so that the selects come straight from flip-flops; (* keep *):
+            // the copies of all stages have the same inputs, and yosys would
+            // merge them into one register again (opt_merge)
+            reg [2:0] ph_oh_q;
             (* keep *) always @(posedge clk_i) begin
-                if (!rst_ni) ph_q <= 2'd0;
-                else if (run_i) ph_q <= (ph_q == 2'd2) ? 2'd0 : ph_q + 2'd1;
+                if (!rst_ni) ph_oh_q <= 3'b001;
+                else if (run_i) ph_oh_q <= {ph_oh_q[1:0], ph_oh_q[2]};
             end
-            csgrt_check_same #(.WIDTH(2), .WHAT("csgrt_fold_step's phase copy")) u_check_phase (
-                .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(ph_q), .orig_i(phase_i));
-            wire advance = (ph_q == 2'd2);
+            csgrt_check_same #(.WIDTH(3), .WHAT("csgrt_fold_step's phase copy")) u_check_phase (
+                .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(ph_oh_q), .orig_i(3'b001 << phase_i));
+            wire advance = ph_oh_q[2];
             assign take_prev_o = advance;
-            assign step_o      = run_i && (advance || (ph_q[0] ? (LIVE2 == 1) : (LIVE1 == 1)));
-            assign bits_o      = advance ? prev_bits_i[I0*W +: W]
-                               : ph_q[0] ? own_bits_i[I2*W +: W] : own_bits_i[I1*W +: W];
+            assign step_o      = run_i && (advance || (ph_oh_q[1] ? (LIVE2 == 1) : (LIVE1 == 1)));
+            assign bits_o      = advance    ? prev_bits_i[I0*W +: W]
+                               : ph_oh_q[1] ? own_bits_i[I2*W +: W] : own_bits_i[I1*W +: W];
             wire unused_ce = ce_i;   // the advance is run_i at phase 2
         end
 
