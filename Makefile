@@ -16,7 +16,7 @@ MODEL_SRC  := $(filter-out model/main.cpp model/%_test.cpp,$(wildcard model/*.cp
 MODEL_OBJ  := $(MODEL_SRC:model/%.cpp=$(BUILD)/model/%.o)
 TEST_SRC   := $(wildcard model/*_test.cpp)
 TEST_OBJ   := $(TEST_SRC:model/%.cpp=$(BUILD)/model/%.o)
-RTL_SRC    := $(wildcard rtl/*.v)
+RTL_SRC    := $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 
 .PHONY: all help deps model render sim sim-run test bench-model lint clean synth timing-modules logic-depth
 all: model

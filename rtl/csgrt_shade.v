@@ -181,12 +181,9 @@ module csgrt_shade #(
     // header) for A4..A9 and B2..B7.
     localparam PXCW = PX_PH;           // {diffuse, ambient, rgb, hit, y, x}
     localparam PXPW = PIXW - PX_PH;    // {phong_size, phong}
-    localparam U_SQ   = 17;            // csgrt_shade_unit's square-root stages
-    localparam U_FRAC = 15;            // and fraction bits
-    localparam U_DL   = U_FRAC + 2;    // csgrt_unit's csgrt_div_core latency (quotient bits + 1)
-    localparam U_PAD  = (5 - (U_DL % 3)) % 3;
-    localparam UNIT_LAT = (II == 1) ? U_SQ + U_FRAC + 7
-                                    : (U_SQ + 2) / 3 + (U_DL + U_PAD + 4) / 3 + 5;
+`include "csgrt_unit_latency.vh"
+    // csgrt_shade_unit is csgrt_unit with FRAC 15 and 17 square-root stages
+    localparam UNIT_LAT = csgrt_unit_latency(15, 17, II);
     // A: u_in (II = 3), A0 2, A1, A2 2, A3, the unit, A10 2, A11, A12 2
     localparam A_PIX_LAT = (II == 1 ? 0 : 1) + 11 + UNIT_LAT;
     // B: B1, the unit, B8 2, B9, B10 and B11 (22 with the specular unit), B12 2, C0

@@ -31,6 +31,11 @@
 // Q takes ceil(SQRT_STAGES/3) beats (6 for 17 stages). Latency
 // ceil(SQRT_STAGES/3) + (FRAC+2+pad+4)/3 + 5 beats (shading: 18).
 // Multipliers: 1; dividers: 1.
+// Both latencies are csgrt_unit_latency() (csgrt_unit_latency.vh), which
+// sizes the sideband's line here and its callers' lines that span a unit.
+// The sideband (user_i) waits in one RAM delay line over the whole latency
+// (csgrt_delay_ram), not in the stages' registers: the square root carries
+// only v, the divisions only the root.
 // Users: csgrt_shade_unit (shading, FRAC 15, 17 stages), csgrt_spawn
 // (normals and secondary-ray directions, FRAC F, F+8 stages).
 module csgrt_unit #(
@@ -54,6 +59,8 @@ module csgrt_unit #(
     output wire [USER_WIDTH-1:0]   user_o
 );
 
+`include "csgrt_unit_latency.vh"
+    localparam LATENCY = csgrt_unit_latency(FRAC, SQRT_STAGES, II);   // beats
     localparam SQ   = SQRT_STAGES;
     localparam QB   = FRAC + 1;           // quotient bits
     localparam UOW  = FRAC + 2;           // signed output width
@@ -62,13 +69,18 @@ module csgrt_unit #(
     localparam NUMW = VW + FRAC;          // v << FRAC
     localparam DENW = SQ + 2;             // L <= 2^SQ, signed
     localparam UW   = USER_WIDTH;
-    localparam MW   = UW + 3 * VW;        // sideband with v
-    localparam DUW  = UW + SQ;            // divider sideband: user, root
+    localparam MW   = 3 * VW;             // v, beside the squares and the square root
+    localparam RW   = SQ;                 // the root, beside the divisions
 
     genvar i;
 
     // every register but the shared multiplier's moves on the beat's advance
     wire adv = adv_i;
+
+    // ---- the sideband: one line over the whole latency ------------------------------
+    // OUT_REG: the line ends in a fabric register, as O's registers did
+    csgrt_delay_ram #(.WIDTH(UW), .STAGES(LATENCY), .OUT_REG(1)) u_dly_user (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .data_i(user_i), .data_o(user_o));
 
     // ---- M: squares -----------------------------------------------------------
     wire [3*PW-1:0] sq;
@@ -79,7 +91,7 @@ module csgrt_unit #(
     wire [MW-1:0] m_side;
     csgrt_delay #(.WIDTH(MW), .STAGES(2)) u_dly_m (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(valid_i),
-        .data_i({user_i, v_i}), .valid_o(m_valid), .data_o(m_side));
+        .data_i(v_i), .valid_o(m_valid), .data_o(m_side));
 
     // ---- S: sum (< 4^SQ by the caller's bound) ----------------------------------
     // squares are non-negative: zero-extended
@@ -116,7 +128,7 @@ module csgrt_unit #(
     reg              p_valid_q;
     reg [DENW-1:0]   p_len_q;
     reg [3*NUMW-1:0] p_num_q;
-    reg [DUW-1:0]    p_user_q;
+    reg [RW-1:0]    p_root_q;
     always @(posedge clk_i) begin
         if (!rst_ni) p_valid_q <= 1'b0;
         else if (adv) p_valid_q <= q_valid;
@@ -124,7 +136,7 @@ module csgrt_unit #(
             p_len_q  <= {2'b00, q_root} + {{(DENW-1){1'b0}}, 1'b1};
             p_num_q  <= {q_side[2*VW +: VW], {FRAC{1'b0}}, q_side[VW +: VW], {FRAC{1'b0}},
                          q_side[0 +: VW], {FRAC{1'b0}}};
-            p_user_q <= {q_root, q_side[3*VW +: UW]};
+            p_root_q <= q_root;
         end
     end
 
@@ -132,7 +144,7 @@ module csgrt_unit #(
     wire            d_valid;
     wire [3*QB-1:0] d_mag;
     wire [2:0]      d_neg, d_ovf;
-    wire [DUW-1:0]  d_user;
+    wire [RW-1:0]  d_root;
     generate
         if (II == 3) begin : g_div_shared
             // one divider, axis k at phase k; its output {neg, quot} reaches
@@ -185,16 +197,16 @@ module csgrt_unit #(
             csgrt_delay #(.WIDTH(1), .STAGES(DB)) u_dly_dv (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(p_valid_q), .data_i(1'b0),
                 .valid_o(d_valid), .data_o(unused_dvld));
-            csgrt_delay_ram #(.WIDTH(DUW), .STAGES(DB)) u_dly_du (
-                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .data_i(p_user_q), .data_o(d_user));
+            csgrt_delay_ram #(.WIDTH(RW), .STAGES(DB)) u_dly_du (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .data_i(p_root_q), .data_o(d_root));
         end else begin : g_div_parallel
         for (i = 0; i < 3; i = i + 1) begin : g_div
             if (i == 0) begin : g_main
-                csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(DUW)) u_div (
+                csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(RW)) u_div (
                     .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .run_i(1'b0), .phase_i(2'd0), .valid_i(p_valid_q),
-                    .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(p_user_q),
+                    .num_i(p_num_q[i*NUMW +: NUMW]), .den_i(p_len_q), .user_i(p_root_q),
                     .valid_o(d_valid), .quot_o(d_mag[i*QB +: QB]), .neg_o(d_neg[i]), .ovf_o(d_ovf[i]),
-                    .user_o(d_user));
+                    .user_o(d_root));
             end else begin : g_other
                 wire unused_v, unused_u;
                 csgrt_div_core #(.NUM_WIDTH(NUMW), .DEN_WIDTH(DENW), .QUOT_BITS(QB), .USER_WIDTH(1)) u_div (
@@ -212,7 +224,7 @@ module csgrt_unit #(
     // ---- O: signed output -----------------------------------------------------------------
     reg             o_valid_q;
     reg [3*UOW-1:0] o_u_q;
-    reg [DUW-1:0]   o_user_q;
+    reg [RW-1:0]   o_root_q;
     integer k;
     always @(posedge clk_i) begin
         if (!rst_ni) o_valid_q <= 1'b0;
@@ -221,13 +233,24 @@ module csgrt_unit #(
             for (k = 0; k < 3; k = k + 1)
                 o_u_q[k*UOW +: UOW] <= d_neg[k] ? {UOW{1'b0}} - {1'b0, d_mag[k*QB +: QB]}
                                                 : {1'b0, d_mag[k*QB +: QB]};
-            o_user_q <= d_user;
+            o_root_q <= d_root;
         end
     end
     assign valid_o = o_valid_q;
     assign u_o     = o_u_q;
-    assign user_o  = o_user_q[0 +: UW];
-    assign root_o  = o_user_q[UW +: SQ];
+    assign root_o  = o_root_q;
+
+`ifndef SYNTHESIS
+    // LATENCY (which times the sideband's line, and the callers' lines that
+    // span a unit) is the pipeline's depth: a valid bit shifted LATENCY
+    // advances leaves with valid_o, or the simulation stops
+    wire lat_valid, unused_lat;
+    csgrt_delay #(.WIDTH(1), .STAGES(LATENCY)) u_lat_check_dly (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv), .valid_i(valid_i), .data_i(1'b0),
+        .valid_o(lat_valid), .data_o(unused_lat));
+    csgrt_check_same #(.WIDTH(1), .WHAT("csgrt_unit_latency()'s valid bit")) u_lat_check (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(lat_valid), .orig_i(o_valid_q));
+`endif
 
     generate
         if (VW < 2 || FRAC < 1 || SQRT_STAGES < 2 || USER_WIDTH < 1 || (II != 1 && II != 3)) begin : g_bad_param

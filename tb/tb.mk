@@ -19,6 +19,7 @@ TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t81 $(BUILD)/tb/mul_ecp5_treg $(BUILD)/tb/mul_vec_treg
 ECP5_MODELS  := $(wildcard tb/ecp5/*.v)
 TB_RTL       := $(wildcard rtl/*.v)
+TB_RTL_INC   := $(wildcard rtl/*.vh)   # included by the modules: dependencies only
 TB_COMMON    := $(wildcard tb/common/*.h)
 TB_VFLAGS    := --cc --exe --build -Wall -O3 -j 2 -y rtl \
                 -MAKEFLAGS OPT_FAST=-O2 -MAKEFLAGS OPT_SLOW=-O1 -MAKEFLAGS OPT_GLOBAL=-O2
@@ -48,7 +49,7 @@ TB_DEP_quadric_at := $(TB_DEP_isect)
 
 # $(1): testbench name (folder tb/$(1)/ with tb_$(1).v and tb_$(1).cpp)
 define TB_RULE
-$(BUILD)/tb/$(1): tb/$(1)/tb_$(1).v tb/$(1)/tb_$(1).cpp $(TB_RTL) $(TB_COMMON) $(TB_DEP_$(1)) model/fixed.h
+$(BUILD)/tb/$(1): tb/$(1)/tb_$(1).v tb/$(1)/tb_$(1).cpp $(TB_RTL) $(TB_RTL_INC) $(TB_COMMON) $(TB_DEP_$(1)) model/fixed.h
 	@mkdir -p $(BUILD)/tb/$(1).obj
 	$(VERILATOR) $(TB_VFLAGS) --Mdir $(BUILD)/tb/$(1).obj --top-module tb_$(1) \
 	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$$(TB_LIB_$(1)) $(TB_LDLIBS)" \
@@ -58,7 +59,7 @@ $(foreach t,$(TB_NAMES),$(eval $(call TB_RULE,$(t))))
 
 # $(1): binary name, $(2): defines beyond CSGRT_ECP5_DSP
 define MUL_ECP5_RULE
-$(BUILD)/tb/$(1): tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_COMMON) $(ECP5_MODELS)
+$(BUILD)/tb/$(1): tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_RTL_INC) $(TB_COMMON) $(ECP5_MODELS)
 	@mkdir -p $(BUILD)/tb/$(1).obj
 	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP $(2) --Mdir $(BUILD)/tb/$(1).obj --top-module tb_mul \
 	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
@@ -70,7 +71,7 @@ $(eval $(call MUL_ECP5_RULE,mul_ecp5_t81,-DCSGRT_LUT_TILE_MAX=81))
 # and with a register behind each tile (csgrt_mul TILE_REG), fabric tiles of 81 too
 $(eval $(call MUL_ECP5_RULE,mul_ecp5_treg,-DCSGRT_LUT_TILE_MAX=81 -GTILE_REG=1 -CFLAGS -DMUL_TILE_REG=1))
 # the time-shared multiplier with the tile registers (two beats still), tiled
-$(BUILD)/tb/mul_vec_treg: tb/mul_vec/tb_mul_vec.v tb/mul_vec/tb_mul_vec.cpp $(TB_RTL) $(TB_COMMON) $(ECP5_MODELS)
+$(BUILD)/tb/mul_vec_treg: tb/mul_vec/tb_mul_vec.v tb/mul_vec/tb_mul_vec.cpp $(TB_RTL) $(TB_RTL_INC) $(TB_COMMON) $(ECP5_MODELS)
 	@mkdir -p $(BUILD)/tb/mul_vec_treg.obj
 	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP -GTILE_REG=1 --Mdir $(BUILD)/tb/mul_vec_treg.obj --top-module tb_mul_vec \
 	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
