@@ -10,9 +10,25 @@
 // Stage 0 (input register): |n|, |d|, neg, ovf, rem = (|n| >> QUOT_BITS).
 // Stage 1+k (quotient bit i = QUOT_BITS-1-k):
 //   rem = (rem << 1) | |n|[i];  q = q << 1;  if (rem >= |d|) { rem -= |d|; q |= 1; }
+// (the restoring form, which defines the bits; the stages below run it
+// non-restoring: same quotient)
 // Example NUM_WIDTH = 4, DEN_WIDTH = 3, QUOT_BITS = 2, n = -7, d = 3:
 // |n| = 0111, rem = 01, bit 1: rem = 3 >= 3 -> 0, q = 1; bit 0: rem = 1, q = 10;
 // quot_o = 2, neg_o = 1 (the result is -2).
+//
+// The stages compute that restoring recurrence's quotient bits without
+// restoring (non-restoring division): a stage keeps the trial remainder
+// r' = 2r + bit - |d| even when it is negative, and the next stage adds
+// |d| back instead of subtracting it: 2r' + bit + |d| = 2(2r + bit) + bit' - |d|,
+// the restoring stage's trial. So every trial equals the restoring one, the
+// quotient bit is its sign (1 when >= 0) and the quotient is the same bit
+// for bit; the remainder, which would need a correction, is not an output.
+// A stage is then one adder (add or subtract by the remainder's sign bit,
+// a register) straight into the registers, where the restoring stage had a
+// compare, a subtraction and a select after them whose select drove every
+// remainder bit (tools/logic_depth.py: csgrt_isect's divider stage, 9 LUT
+// levels, 13.60 ns, the worst path of the 24-bit netlist at dd70611).
+// The remainder is DW+1 bits signed: -|d| <= r' < |d|.
 //
 // FOLD = 3 (a pipeline that moves every third running clock, csgrt_beat
 // II = 3): each iteration stage finds three quotient bits, one per running
@@ -59,7 +75,13 @@ module csgrt_div_core #(
     wire [XW-1:0] un_x = {{DW{1'b0}}, un};
     wire [XW-1:0] ud_x = {{NW{1'b0}}, ud};
     wire [XW-1:0] hi_x = un_x >> QB;   // the bits above the quotient window
-    wire          ovf0 = (hi_x >= ud_x);
+    // hi >= |d| as the sign of an explicit subtraction: a carry chain
+    // (written as a compare, the LUT mapping gave a 5-level tree behind the
+    // magnitudes' chains, csgrt_isect's worst path once its stages were
+    // non-restoring, tools/logic_depth.py 9.77 ns)
+    wire [XW:0]   hi_minus_d = {1'b0, hi_x} - {1'b0, ud_x};
+    wire          ovf0 = !hi_minus_d[XW];
+    wire [XW-1:0] unused_hi_minus_d = hi_minus_d[XW-1:0];
     // without overflow hi_x < |d| < 2^DW: the bits above DW are only looked
     // at by the overflow check
     wire [XW-DW-1:0] unused_hi = hi_x[XW-1:DW];
@@ -96,8 +118,11 @@ module csgrt_div_core #(
     // by the next stage through the wire arrays below (csgrt_sqrt_core says
     // why: the Verilator model writes them as variables of their own).
     reg  [NS-1:0] valid_q;
-    wire [DW-1:0] rem_w  [0:NS-1];
-    wire [QB-1:0] quot_w [0:NS-1];
+    wire [DW:0]   rem_w  [0:NS-1];   // signed: -|d| <= rem < |d|
+    // The quotient is kept inverted (quotn: bit 1 for a quotient bit 0), so
+    // that the trial's sign bit goes straight from the carry chain into its
+    // register, without an inverter LUT; quot_o inverts it at the end.
+    wire [QB-1:0] quotn_w [0:NS-1];
     wire [SW-1:0] side_w [0:NS-1];
 
     wire [SW-1:0] side0 = {s0_ovf_q, s0_neg_q, s0_lo_q, s0_ud_q};
@@ -113,23 +138,23 @@ module csgrt_div_core #(
     genvar k;
     generate
         for (k = 0; k < NS; k = k + 1) begin : g_stage
-            wire [DW-1:0] rem_in;
-            wire [QB-1:0] quot_in;
+            wire [DW:0]   rem_in;
+            wire [QB-1:0] quotn_in;
             wire [SW-1:0] side_in;
             if (k == 0) begin : g_first
-                assign rem_in  = s0_rem_q;
-                assign quot_in = {QB{1'b0}};
+                assign rem_in  = {1'b0, s0_rem_q};
+                assign quotn_in = {QB{1'b1}};
                 assign side_in = side0;
             end else begin : g_next
                 assign rem_in  = rem_w[k-1];
-                assign quot_in = quot_w[k-1];
+                assign quotn_in = quotn_w[k-1];
                 assign side_in = side_w[k-1];
             end
-            reg [DW-1:0] rem_q;
-            reg [QB-1:0] quot_q;
+            reg [DW:0]   rem_q;
+            reg [QB-1:0] quotn_q;
             reg [SW-1:0] side_q;
             assign rem_w[k]  = rem_q;
-            assign quot_w[k] = quot_q;
+            assign quotn_w[k] = quotn_q;
             assign side_w[k] = side_q;
 
             // the step's operands: the previous stage's item (FOLD = 1, and
@@ -143,21 +168,29 @@ module csgrt_div_core #(
                 .ce_i(ce_i), .run_i(run_i), .phase_i(phase_i),
                 .prev_bits_i(side_in[DW +: QB]), .own_bits_i(side_q[DW +: QB]),
                 .take_prev_o(take_prev), .step_o(step), .bits_o(lo_bit));
-            wire [DW-1:0] rem_src  = take_prev ? rem_in  : rem_q;
-            wire [QB-1:0] quot_src = take_prev ? quot_in : quot_q;
-            wire [DW-1:0] ud_src   = take_prev ? side_in[DW-1:0] : side_q[DW-1:0];
-            wire [DW:0]   rem_sh  = {rem_src, lo_bit};
-            wire          take    = (rem_sh >= {1'b0, ud_src});
-            wire [DW:0]   rem_nx  = take ? rem_sh - {1'b0, ud_src} : rem_sh;
-            // without overflow rem_nx < |d| < 2^DW: its top bit is zero
-            wire          unused_rem_top = rem_nx[DW];
-            // quot_src < 2^(QB-1) before the last step: its top bit is zero
-            wire          unused_quot_top = quot_src[QB-1];
+            wire [DW:0]   rem_src   = take_prev ? rem_in  : rem_q;
+            wire [QB-1:0] quotn_src = take_prev ? quotn_in : quotn_q;
+            wire [DW-1:0] ud_src    = take_prev ? side_in[DW-1:0] : side_q[DW-1:0];
+            wire          rem_neg  = rem_src[DW];
+            wire [DW+1:0] rem_sh   = {rem_src, lo_bit};
+            // one adder: rem_sh - |d| (remainder >= 0) or rem_sh + |d|
+            // (negative), the subtraction's +1 entering as a low bit:
+            // ({rem_sh, 1} + {~|d|, 1}) >> 1 = rem_sh - |d|, and
+            // ({rem_sh, 1} + {|d|, 0}) >> 1 = rem_sh + |d|
+            wire [DW+1:0] d_op     = rem_neg ? {2'b00, ud_src} : ~{2'b00, ud_src};
+            wire [DW+2:0] sum      = {rem_sh, 1'b1} + {d_op, !rem_neg};
+            wire [DW+1:0] trial    = sum[DW+2:1];
+            // -|d| <= trial < |d|: bit DW+1 repeats bit DW; sum's low bit is 1 or 0 by the
+            // operation, not part of the trial
+            wire          unused_trial = ^{trial[DW], sum[0]};
+            wire [DW:0]   rem_nx   = {trial[DW+1], trial[DW-1:0]};
+            // the quotient's top bit is still 0 (quotn's 1) before the last step
+            wire          unused_quot_top = quotn_src[QB-1];
 
             always @(posedge clk_i)
                 if (step) begin
-                    rem_q  <= rem_nx[DW-1:0];
-                    quot_q <= {quot_src[QB-2:0], take};
+                    rem_q   <= rem_nx;
+                    quotn_q <= {quotn_src[QB-2:0], trial[DW+1]};   // the trial's sign: 1 for quotient bit 0
                     if (take_prev) side_q <= side_in;
                 end
         end
@@ -165,7 +198,7 @@ module csgrt_div_core #(
 
     wire [SW-1:0] side_last = side_w[NS-1];
     assign valid_o = valid_q[NS-1];
-    assign quot_o  = quot_w[NS-1];
+    assign quot_o  = ~quotn_w[NS-1];
     assign neg_o   = side_last[DW+QB];
     assign ovf_o   = side_last[DW+QB+1];
 
