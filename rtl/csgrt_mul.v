@@ -135,14 +135,42 @@ module csgrt_mul #(
                     localparam WW = WA + WB - WN;          // the wider one
                     reg [WW:0]    w_q;
                     reg [WN:0]    n_q;
-                    reg [VW-1:0]  p_q, rows;
                     wire [VW-1:0] w_e = {{(WN+1){w_q[WW]}}, w_q};
-                    integer r;
-                    always @* begin
-                        rows = {VW{1'b0}};
-                        for (r = 0; r < WN; r = r + 1) rows = rows + ((w_e << r) & {VW{n_q[r]}});
-                        rows = rows - ((w_e << WN) & {VW{n_q[WN]}});
+                    // the rows summed as two balanced trees (rows 0 .. H-1
+                    // and H .. WN, each 3 adders deep for up to 8 rows)
+                    // rather than one after the other (WN + 1 deep); the
+                    // sign row (WN) is negated in its place. Leaves past
+                    // the rows are zero and their adders vanish.
+                    localparam NL = 8;             // leaves per half: WN + 1 <= 2 NL (checked here)
+                    localparam H  = (WN + 2) / 2;  // rows in the low half
+                    if (WN + 1 > 2 * NL) begin : g_bad_tile
+                        initial begin
+                            $display("ERROR %m: csgrt_mul fabric tiles take at most 15 x 15 bits (LUT_TILE_MAX < 256)");
+                            $finish;
+                        end
                     end
+                    wire [VW-1:0] leaf_lo [0:NL-1];
+                    wire [VW-1:0] leaf_hi [0:NL-1];
+                    genvar r;
+                    for (r = 0; r < NL; r = r + 1) begin : g_leaf
+                        // row k: w << k where bit k of n is set; the sign row negated
+                        if (r < H) begin : g_lo
+                            assign leaf_lo[r] = (w_e << r) & {VW{n_q[r]}};
+                        end else begin : g_lo_zero
+                            assign leaf_lo[r] = {VW{1'b0}};
+                        end
+                        if (H + r < WN) begin : g_hi
+                            assign leaf_hi[r] = (w_e << (H + r)) & {VW{n_q[H + r]}};
+                        end else if (H + r == WN) begin : g_hi_sign
+                            assign leaf_hi[r] = {VW{1'b0}} - ((w_e << WN) & {VW{n_q[WN]}});
+                        end else begin : g_hi_zero
+                            assign leaf_hi[r] = {VW{1'b0}};
+                        end
+                    end
+                    wire [VW-1:0] half_lo = ((leaf_lo[0] + leaf_lo[1]) + (leaf_lo[2] + leaf_lo[3]))
+                                          + ((leaf_lo[4] + leaf_lo[5]) + (leaf_lo[6] + leaf_lo[7]));
+                    wire [VW-1:0] half_hi = ((leaf_hi[0] + leaf_hi[1]) + (leaf_hi[2] + leaf_hi[3]))
+                                          + ((leaf_hi[4] + leaf_hi[5]) + (leaf_hi[6] + leaf_hi[7]));
                     wire [WW:0] w_x;
                     wire [WN:0] n_x;
                     if (WA < WB) begin : g_b_wide
@@ -156,9 +184,28 @@ module csgrt_mul #(
                         if (ce_i) begin
                             w_q <= w_x;
                             n_q <= n_x;
-                            p_q <= rows;
                         end
-                    assign v = p_q;
+                    if (TILE_REG != 0) begin : g_halves
+                        // the tile register follows: the two halves of the
+                        // tree are registered where a block has its output
+                        // register, and added on the way into the tile
+                        // register (a 6 x 6 tile's whole tree in one clock
+                        // was the 24-bit netlist's worst path after the
+                        // non-restoring dividers, tools/logic_depth.py
+                        // 12.39 ns, 6 LUT levels)
+                        reg [VW-1:0] lo_q, hi_q;
+                        always @(posedge clk_i)
+                            if (ce_i) begin
+                                lo_q <= half_lo;
+                                hi_q <= half_hi;
+                            end
+                        assign v = lo_q + hi_q;
+                    end else begin : g_whole
+                        reg [VW-1:0] p_q;
+                        always @(posedge clk_i)
+                            if (ce_i) p_q <= half_lo + half_hi;
+                        assign v = p_q;
+                    end
                 end else begin : g_dsp
                     // the chunks extended to the block's 18 bits (a signed
                     // chunk by its sign, an unsigned one is 18 bits already)
