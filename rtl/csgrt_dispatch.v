@@ -180,6 +180,16 @@ module csgrt_dispatch #(
             assign pair_o_o[k*3*BITS +: 3*BITS] = pair_od_q[k*OD + 3*BITS +: 3*BITS];
             assign pair_d_o[k*3*BITS +: 3*BITS] = pair_od_q[k*OD +: 3*BITS];
             assign fill_lanes[k] = (k < fill_count_q);
+            // Slot k takes ray_i on every clock that it is the next to fill,
+            // accepted or not: it is read (at a launch) only once
+            // fill_count_q has passed it, and the accept that passes it
+            // takes that clock's ray; a launch reads the old words. So the
+            // slot's enable is a decode of fill_count_q instead of the
+            // accept handshake (the ray tree's queue valid and this unit's
+            // ready: the enables of 144 bits at the end of the 24-bit
+            // netlist's fourth-longest path, tools/logic_depth.py 11.28 ns).
+            always @(posedge clk_i)
+                if (fill_count_q == k) fill_od_q[k*OD +: OD] <= ray_i[OD-1:0];
         end
     endgenerate
 
@@ -200,7 +210,6 @@ module csgrt_dispatch #(
                 fill_count_q <= {CW{1'b0}};
                 fill_done_q  <= 1'b0;
             end else if (accept) begin
-                fill_od_q[fill_count_q * OD +: OD] <= ray_i[OD-1:0];
                 fill_count_q <= fill_count_q + 1'b1;
                 if ({{(32-CW){1'b0}}, fill_count_q} + 32'd1 == NUM_UNITS || ray_last_i) fill_done_q <= 1'b1;
             end
