@@ -102,7 +102,7 @@
 // every third clock, and only while fewer than CTX = 32 hits sit between the
 // input and the child sequencer, so no queue below can overflow):
 //   H    (3)        the hit held for three clocks; phase j feeds axis j
-//   T    (2)        t d_j                      1 multiplier, shared by the 3 axes
+//   T    (3)        t d_j                      1 multiplier, shared by the 3 axes (tiles registered)
 //   P    (1)        p_j = o_j + rnd(t d_j, F), range check
 //   G    (2)        A_ij p_j (column j)        3 multipliers, shared by the 3 columns
 //   ACC  (1)        g_i accumulated column by column (+ P_i << F, + rounding)
@@ -172,21 +172,22 @@
 // take most of the LUTs in every configuration.
 //
 // ---- Timing --------------------------------------------------------------------
-// Latency (no back-pressure, idle front): 5F+65 clocks from a hit's
-// acceptance to its first child (BITS 12: 110, 16: 130, 24: 170, 32: 210);
-// without REFRACTION 4F+59 (the sequencer takes the hit from the normal's
-// queue, F+6 clocks before S6 would have finished: BITS 12: 95, 16: 111,
-// 24: 143, 32: 175; 4F+56 before the queue moved to block RAM, whose head
-// comes one clock later, and two clocks less before the gradient's
-// products and the normal's squares were registered ahead of their sums,
-// gp_q and ggp_q). The consumer (csgrt_raytree) takes children by
-// valid/ready and m_user_o and assumes no latency.
+// Latency (no back-pressure, idle front): 5F+66 clocks from a hit's
+// acceptance to its first child (BITS 12: 111, 16: 131, 24: 171, 32: 211);
+// without REFRACTION 4F+60 (the sequencer takes the hit from the normal's
+// queue, F+6 clocks before S6 would have finished: BITS 12: 96, 16: 112,
+// 24: 144, 32: 176; 4F+56 before the queue moved to block RAM, whose head
+// comes one clock later, two clocks less before the gradient's products
+// and the normal's squares were registered ahead of their sums, gp_q and
+// ggp_q, and one less before T's tiles were, u_mul_t's TILE_REG). The
+// consumer (csgrt_raytree) takes children by valid/ready and m_user_o and
+// assumes no latency.
 // Throughput: one child per clock while hits are waiting at the sequencer:
 // a hit's children leave on consecutive clocks and the next hit's first
 // child follows its predecessor's last without a gap. The front accepts a
-// hit every third clock at most, and holds each of its 32 credits for 3F+45
-// clocks (2F+39 without REFRACTION): back to back, a hit every
-// max(3, (3F+45)/32) clocks (BITS 12, 16: 3; 24: 3.3; 32: 4.1; without
+// hit every third clock at most, and holds each of its 32 credits for 3F+46
+// clocks (2F+40 without REFRACTION): back to back, a hit every
+// max(3, (3F+46)/32) clocks (BITS 12, 16: 3; 24: 3.4; 32: 4.2; without
 // REFRACTION 3 up to BITS 32), so hits with fewer children than that leave
 // gaps.
 // At most 32 hits wait between sequencer and output (their p, d, user).
@@ -424,13 +425,19 @@ module csgrt_spawn #(
     // ---- T: t d_j ------------------------------------------------------------
     wire [PTW-1:0] td_p;
     wire           unused_td_v;
-    csgrt_mul #(.A_WIDTH(TW), .B_WIDTH(B)) u_mul_t (
+    // TILE_REG: the tiles' values registered before their sum, so that P
+    // (the sum, the rounding, o_j + rnd(t d_j) and the range test) starts
+    // from flip-flops beside it and not at the MULT18X18D's output across
+    // the die (the routed critical path of 18b6b1d's 24-bit build with
+    // shadows and reflection, 81.93 MHz: 0.74 ns clock to output, 3.20 ns
+    // of route, then those carry chains). T takes 3 clocks.
+    csgrt_mul #(.A_WIDTH(TW), .B_WIDTH(B), .TILE_REG(1)) u_mul_t (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(h_valid_q),
         .a_i(h_t_q), .b_i(h_dj), .valid_o(unused_td_v), .p_o(td_p));
     localparam TSDW = 2 + B + 4 * B;
     wire            t_valid;
     wire [TSDW-1:0] t_side;
-    csgrt_delay #(.WIDTH(TSDW), .STAGES(2)) u_dly_t (
+    csgrt_delay #(.WIDTH(TSDW), .STAGES(3)) u_dly_t (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(h_valid_q),
         .data_i({h_col, h_oj, h_ph_q}), .valid_o(t_valid), .data_o(t_side));
     wire [1:0]     t_colj = t_side[1:0];
