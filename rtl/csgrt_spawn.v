@@ -430,14 +430,16 @@ module csgrt_spawn #(
     // from flip-flops beside it and not at the MULT18X18D's output across
     // the die (the routed critical path of 18b6b1d's 24-bit build with
     // shadows and reflection, 81.93 MHz: 0.74 ns clock to output, 3.20 ns
-    // of route, then those carry chains). T takes 3 clocks.
-    csgrt_mul #(.A_WIDTH(TW), .B_WIDTH(B), .TILE_REG(1)) u_mul_t (
+    // of route, then those carry chains). T takes csgrt_mul's 2 + TILE_REG
+    // clocks.
+    localparam T_TILE_REG = 1;
+    csgrt_mul #(.A_WIDTH(TW), .B_WIDTH(B), .TILE_REG(T_TILE_REG)) u_mul_t (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(h_valid_q),
         .a_i(h_t_q), .b_i(h_dj), .valid_o(unused_td_v), .p_o(td_p));
     localparam TSDW = 2 + B + 4 * B;
     wire            t_valid;
     wire [TSDW-1:0] t_side;
-    csgrt_delay #(.WIDTH(TSDW), .STAGES(3)) u_dly_t (
+    csgrt_delay #(.WIDTH(TSDW), .STAGES(2 + T_TILE_REG)) u_dly_t (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(h_valid_q),
         .data_i({h_col, h_oj, h_ph_q}), .valid_o(t_valid), .data_o(t_side));
     wire [1:0]     t_colj = t_side[1:0];

@@ -98,11 +98,11 @@ module csgrt_sqrt_core #(
             wire [NW-1:0] n_in;
             if (k == 0) begin : g_in
                 assign rem_in   = {RW{1'b0}};
-                assign rootn_in  = {R{1'b1}};
+                assign rootn_in = {R{1'b1}};
                 assign n_in     = n_i;
             end else begin : g_in
                 assign rem_in   = rem_w[k-1];
-                assign rootn_in  = rootn_w[k-1];
+                assign rootn_in = rootn_w[k-1];
                 assign n_in     = n_w[k-1];
             end
             reg [RW-1:0] rem_q;

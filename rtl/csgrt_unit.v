@@ -151,9 +151,8 @@ module csgrt_unit #(
             // the end of the pad after DLE = 3m + 2 clocks, so axis k's is
             // caught at phase (k + 2) mod 3 and all three are copied at the
             // next advance (csgrt_mul_vec's scheme, with 3m more clocks)
-            localparam DL  = QB + 1;                     // csgrt_div_core's latency
-            localparam PAD = (5 - (DL % 3)) % 3;         // DL + PAD = 2 mod 3
-            localparam DB  = (DL + PAD + 4) / 3;         // beats from P to O's input
+            localparam PAD = csgrt_unit_div_pad(FRAC);    // csgrt_div_core's latency QB + 1, + PAD = 2 mod 3
+            localparam DB  = csgrt_unit_div_beats(FRAC);  // beats from P to O's input
             reg [NUMW-1:0] num_sel;
             always @* begin
                 case (phase_i)
