@@ -500,11 +500,17 @@ module csgrt_spawn #(
     wire           qp_inr = qp_data[3*B];
 
     // ---- G: A_ij p_j, column j -------------------------------------------------------
+    // The corner tile in a MULT18X18D too (LUT_TILE_MAX 0; at BITS 24 the
+    // 6 x 6 corner, 3 blocks more): in the fabric it was a tree of rows from
+    // the operand registers (43 loads each) into its tile register,
+    // tools/logic_depth.py's sixth-longest path of 18b6b1d's 24-bit netlist
+    // (11.45 ns), where a block is a register to a register. TILE_REG 1
+    // would split it as well but costs a clock on the hit's way.
     wire [3*GPW-1:0] gp;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_grad
             wire unused_v;
-            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B)) u_mul (
+            csgrt_mul #(.A_WIDTH(B), .B_WIDTH(B), .LUT_TILE_MAX(0)) u_mul (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(p_valid_q),
                 .a_i(p_cc_q[i*B +: B]), .b_i(p_val_q), .valid_o(unused_v), .p_o(gp[i*GPW +: GPW]));
         end

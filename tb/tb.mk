@@ -16,7 +16,7 @@ TB_NAMES     := sqrt div isect camera shade
 TB_NAMES     += class_node class_tree walk spawn quadric_at mul mul_vec fifo
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 # the multiplier bench once more as the FPGA build maps csgrt_mul (MULT18X18D tiles)
-TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t81 $(BUILD)/tb/mul_ecp5_treg $(BUILD)/tb/mul_vec_treg
+TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t0 $(BUILD)/tb/mul_ecp5_t81 $(BUILD)/tb/mul_ecp5_treg $(BUILD)/tb/mul_vec_treg
 ECP5_MODELS  := $(wildcard tb/ecp5/*.v)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_RTL_INC   := $(wildcard rtl/*.vh)   # included by the modules: dependencies only
@@ -66,6 +66,9 @@ $(BUILD)/tb/$(1): tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_RTL_INC) $(TB
 	    -o $(CURDIR)/$(BUILD)/tb/$(1) $(CURDIR)/tb/mul/tb_mul.v $(CURDIR)/tb/mul/tb_mul.cpp
 endef
 $(eval $(call MUL_ECP5_RULE,mul_ecp5,))
+# and with no fabric tile at all (LUT_TILE_MAX 0: every corner in a block,
+# as csgrt_spawn's gradient products are built)
+$(eval $(call MUL_ECP5_RULE,mul_ecp5_t0,-DCSGRT_LUT_TILE_MAX=0))
 # and with the larger fabric tiles of tools/synth.sh --lut-tile-max 81
 $(eval $(call MUL_ECP5_RULE,mul_ecp5_t81,-DCSGRT_LUT_TILE_MAX=81))
 # and with a register behind each tile (csgrt_mul TILE_REG), fabric tiles of 81 too

@@ -18,7 +18,9 @@
 # chunk widths' product is at most N in the fabric instead of a block
 # (default 36, the 6 x 6 corner of a 24 x 24 product; 81 also takes the
 # 6 x 8, 6 x 9, 6 x 12, 4 x 18, 7 x 7, 8 x 8, 9 x 9 and 17 x 4 tiles of BITS 24
-# off the blocks, for about 300 LUT4 each: docs/fpga.md "Multipliers").
+# off the blocks, for about 300 LUT4 each: docs/fpga.md "Multipliers"; the
+# one exception is csgrt_spawn's three gradient products, whose corner tile
+# is a block whatever N, rtl/csgrt_spawn.v g_grad).
 #
 # --per-module: area only, no place and route: synth_ecp5 -noflatten and a
 # table of LUT4 / FF / MULT18X18D / BRAM per module instance
