@@ -96,9 +96,10 @@
 // ev_next_same_t_o: the next event's t equals the head's, ev_same_t_o after
 // a pop (the walker's probe_q).
 //
-// Latency: a leaf result accepted at edge k is in the fill bank after edge
-// k+1; a ray whose last leaf is accepted at edge k is on the drain side
-// (ray_valid_o) after edge k+2 if the drain bank is free. The same with
+// Latency: a leaf result accepted at edge k is in the pre-stage after edge
+// k, in the input stage after k+1 and in the fill bank after edge k+2; a
+// ray whose last leaf is accepted at edge k is on the drain side
+// (ray_valid_o) after edge k+3 if the drain bank is free. The same with
 // SECONDARY = 1.
 // Throughput: one leaf result (up to two events) per clock with INSERTS =
 // 2, no bubble between rays while the walker keeps up; with INSERTS = 1 one
@@ -188,8 +189,17 @@ module csgrt_event_sort #(
     // the key of a stored event: its top KW bits (the slot is not part of it)
     `define CSGRT_KEY(e) e[DW-1 -: KW]
 
-    // ---- input stage: behind / ahead, origin flag, the pair sorted ------
-    wire in_fire = valid_i && ready_o;
+    // ---- pre-stage: behind / ahead, origin flag, the pair's order --------
+    // A leaf result is taken into the pre-stage (p_*) and its tests are
+    // worked out there: which events lie ahead, their order (swap), how
+    // many the t limit keeps, the slot's origin flag. The input stage
+    // (s1_*) then loads the pair already decided, one choice per bit.
+    // Computed in the clock that loads s1_a_q, the tests (the count, the
+    // ranges, the t compare, then the pair's choice over 2 x DW bits) were
+    // the longest paths of aaa564b's 24-bit netlist after the class tree's
+    // (tools/logic_depth.py 11.81 ns, 6 LUT levels, count_i -> s1_a_q).
+    wire p_fire = valid_i && ready_o;      // a leaf result into the pre-stage
+    wire in_fire;                          // the pre-stage's leaf into the input stage
     wire ev0 = count_i != 2'd0;
     wire ev1 = count_i == 2'd2;
     wire keep0, keep1;                     // within the t limit (secondary rays)
@@ -216,7 +226,8 @@ module csgrt_event_sort #(
 
     reg                     s1_valid_q;
     reg [1:0]               s1_n_q;        // events ahead: 0, 1 (a) or 2 (a < b)
-    reg [DW-1:0]            s1_a_q, s1_b_q;
+    wire [DW-1:0]           s1_a_q;        // the first group's copy (s1_ag, below)
+    reg [DW-1:0]            s1_b_q;
     reg [NLO-1:0]           s1_slo_q;      // the slot's low and high halves, one-hot (onehot_lo, onehot_hi)
     reg [NHI-1:0]           s1_shi_q;
     reg                     s1_flag_q, s1_last_q;
@@ -262,10 +273,20 @@ module csgrt_event_sort #(
     // had 974 loads at 32 cells (each cell's occupancy, its drain word's
     // enable and choice), its net alone 4.4 ns of tools/logic_depth.py's
     // 11.40 into the fill cells' enables, and a net that spans the whole
-    // bank on the die.
-    localparam HC_CELLS = 8;
+    // bank on the die. Groups of 4 cells: with 8, a copy still had 427
+    // loads, the first net of an 11.17 ns path on aaa564b's netlist.
+    localparam HC_CELLS = 4;
     localparam NHC      = (N + HC_CELLS - 1) / HC_CELLS;
     wire [NHC-1:0] hov;
+    // The cells read the event a from copies of s1_a_q too, one per group
+    // of AC_CELLS cells (s1_ag, below), loaded as s1_a_q is: each key bit
+    // of the one register went to 64 loads (every cell's comparator and
+    // next-word choice), the first net of the bank's insertion paths, whose
+    // 1,055 endpoints were over 10 ns on aaa564b's netlist (tools/
+    // logic_depth.py 10.75 ns: a's key -> a cell's compare -> its enable).
+    localparam AC_CELLS = 8;
+    localparam NAC      = (N + AC_CELLS - 1) / AC_CELLS;
+    wire [DW-1:0] s1_ag [0:NAC-1];
     // The input stage's tests as registers of their own, loaded with the
     // next values of what they test: fb_q = full_q && busy_q (the fill
     // bank holds a ray that cannot hand over), s1_two_q = s1_n_q == 2
@@ -289,7 +310,23 @@ module csgrt_event_sort #(
     reg  in_ready_q;
     wire in_ready = in_ready_q;
     wire flag_in;                          // the slot's origin flag
-    wire info_ok;                          // the ray's info is there (secondary rays; else 1)
+
+    // the pre-stage's registers: the leaf's two events as they came (the
+    // tie field encoded), which of them are a and b, how many go in
+    reg                     p_valid_q;
+    reg [DW-1:0]            p_e0_q, p_e1_q;
+    reg                     p_asel_q;      // a = e1 (else e0)
+    reg                     p_bsel_q;      // b = e0 (else e1): the pair swapped
+    reg [1:0]               p_n_q;         // events ahead within the limit: 0, 1 or 2
+    reg                     p_two_q;       // p_n_q == 2
+    reg [NLO-1:0]           p_slo_q;
+    reg [NHI-1:0]           p_shi_q;
+    reg                     p_flag_q, p_last_q;
+    reg [PAYLOAD_WIDTH-1:0] p_pay_q;
+    assign in_fire = p_valid_q && in_ready;
+    // ready_o (below): the pre-stage is empty or its leaf moves on in this
+    // clock, a LUT of two registers (with SECONDARY and the info's valid)
+    wire p_room = !p_valid_q || in_ready;
     // look-behind fix-up (SECONDARY), applied with the ray's handover: entry
     // e sets the flag of its slot to !fix_ent[e] iff fix_lo's and fix_hi's
     // one-hot halves of entry e both select the slot (see g_sec)
@@ -324,6 +361,46 @@ module csgrt_event_sort #(
         end
     endgenerate
 
+    // the pre-stage's loads (its declarations are above)
+    always @(posedge clk_i) begin
+        if (!rst_ni) p_valid_q <= 1'b0;
+        else p_valid_q <= p_fire || (p_valid_q && !in_fire);
+        if (p_fire) begin
+            p_e0_q   <= e0;
+            p_e1_q   <= e1;
+            p_asel_q <= swap || !ahead0;
+            p_bsel_q <= swap;
+            p_n_q    <= {1'b0, ahead0 && keep0} + {1'b0, ahead1 && keep1};
+            p_two_q  <= ahead0 && keep0 && ahead1 && keep1;
+            p_slo_q  <= onehot_lo(slot_i);
+            p_shi_q  <= onehot_hi(slot_i);
+            p_flag_q <= flag_in;
+            p_last_q <= last_i;
+            p_pay_q  <= payload_i;
+        end
+    end
+
+    // the input stage's event a (s1_a_q) as copies, one per group of cells
+    // (s1_ag), each in an always block of its own under (* keep *): yosys
+    // merges flip-flops of the same input otherwise. A split leaf's b moves
+    // into a; a leaf into the stage brings its a.
+    genvar ag;
+    generate
+        for (ag = 0; ag < NAC; ag = ag + 1) begin : g_acopy
+            reg [DW-1:0] ag_q;
+            (* keep *) always @(posedge clk_i) begin
+                if (s1_adv && s1_split) ag_q <= s1_b_q;
+                if (in_fire)            ag_q <= p_asel_q ? p_e1_q : p_e0_q;
+            end
+            assign s1_ag[ag] = ag_q;
+        end
+        for (ag = 1; ag < NAC; ag = ag + 1) begin : g_acheck
+            csgrt_check_same #(.WIDTH(DW), .WHAT("s1_ag (the cells' copies of s1_a_q)")) u_check_ag (
+                .clk_i, .rst_ni, .copy_i(s1_valid_q ? s1_ag[ag] : {DW{1'b0}}), .orig_i(s1_valid_q ? s1_a_q : {DW{1'b0}}));
+        end
+    endgenerate
+    assign s1_a_q = s1_ag[0];
+
     // ---- insertion into the fill bank (emptied on a handover) ------------
     // Each cell learns whether it holds an event from its own bit of occ_q
     // (with the handover), not from a compare of its index with the count:
@@ -334,7 +411,6 @@ module csgrt_event_sort #(
     wire [N-1:0]  base_occ = handover ? {N{1'b0}} : occ_q;
     wire [N+1:0]  occ_in1  = {1'b0, base_occ, 1'b1};    // one event more (bits N-1:0)
     wire [N+1:0]  occ_in2  = {base_occ, 2'b11};         // two more
-    wire [KW-1:0] key_a = `CSGRT_KEY(s1_a_q);
     wire [KW-1:0] key_b = `CSGRT_KEY(s1_b_q);
     wire [N-1:0]  lt_a, lt_b;              // cell j holds an event before a / b
                                            // (a missing event counts as +infinity;
@@ -346,10 +422,11 @@ module csgrt_event_sort #(
             reg  [DW-1:0] fill_q, drain_q;
             wire [DW-1:0] cur  = fill_q;
             wire          hov_j = hov[j / HC_CELLS];    // handover, from the group's copy
+            wire [DW-1:0] a_j   = s1_ag[j / AC_CELLS];  // the event a, from the group's copy
             wire          here = !hov_j && occ_q[j];    // base_occ[j]: j < base_cnt
             wire [KW-1:0] k    = `CSGRT_KEY(cur);
             wire [DW-1:0] ins;                 // the cell's next word
-            assign lt_a[j] = here && (s1_n_q == 2'd0 || k < key_a);   // no event: a = +inf
+            assign lt_a[j] = here && (s1_n_q == 2'd0 || k < `CSGRT_KEY(a_j));   // no event: a = +inf
             // b: only the two-insertion array compares with it (with one,
             // a split leaf's b is the next clock's a)
             if (INSERTS == 1) begin : g_b_one
@@ -358,18 +435,18 @@ module csgrt_event_sort #(
                 assign lt_b[j] = here && (s1_n_q != 2'd2 || k < key_b);
             end
             if (j == 0) begin : g_first
-                assign ins = lt_a[0] ? cur : s1_a_q;
+                assign ins = lt_a[0] ? cur : a_j;
             end else if (INSERTS == 1) begin : g_one
                 assign ins = lt_a[j]   ? cur :
-                             lt_a[j-1] ? s1_a_q :
+                             lt_a[j-1] ? a_j :
                                          fill_w[j-1];
             end else if (j == 1) begin : g_second
                 assign ins = lt_a[1] ? cur :
-                             lt_a[0] ? s1_a_q :
+                             lt_a[0] ? a_j :
                              lt_b[0] ? fill_w[0] : s1_b_q;
             end else begin : g_rest
                 assign ins = lt_a[j]   ? cur :
-                             lt_a[j-1] ? s1_a_q :
+                             lt_a[j-1] ? a_j :
                              lt_b[j-1] ? fill_w[j-1] :
                              lt_b[j-2] ? s1_b_q :
                                          fill_w[j-2];
@@ -461,20 +538,39 @@ module csgrt_event_sort #(
         if (SECONDARY != 0) begin : g_sec
             wire sec = info_secondary_i;
             wire lim = info_tlimit_i != {UW{1'b0}};
-            assign info_ok      = info_valid_i;
-            assign ready_o      = in_ready && info_valid_i;
+            assign ready_o      = p_room && info_valid_i;
             assign info_ready_o = valid_i && ready_o && last_i;   // popped with the last leaf
             assign keep0   = !sec || !lim || t0_i[UW-1:0] < info_tlimit_i;
             assign keep1   = !sec || !lim || t1_i[UW-1:0] < info_tlimit_i;
             assign flag_in = sec ? info_flags_i[slot_i] : flag_primary;
 
             // cpos of the leaf in each entry's slot, accumulated over the
-            // ray's leaves (acc_q: those accepted so far; one leaf per slot)
+            // ray's leaves (acc_q: those past the pre-stage so far; one leaf
+            // per slot). The pre-stage holds the leaf's own part (p_cpk_q)
+            // and the ray's look-behind entries with its last leaf (p_run_q
+            // .. p_hi_q), read from the info record as the leaf comes in.
             reg  [LBK-1:0] acc_q;
             wire [LBK-1:0] cp;
+            reg  [LBK-1:0] p_cpk_q, p_run_q, p_same_q, p_lbent_q;
+            reg  [LBK*NLO-1:0] p_lo_q;
+            reg  [LBK*NHI-1:0] p_hi_q;
+            wire [LBK-1:0] cpk;                // the leaf's cpos in entry k's slot
+            integer pe;
             for (k = 0; k < LBK; k = k + 1) begin : g_lb
-                wire hit_slot = slot_i == info_lb_slot_i[k*H +: H];
-                assign cp[k]  = acc_q[k] || (cpos_i && hit_slot);
+                assign cpk[k] = cpos_i && slot_i == info_lb_slot_i[k*H +: H];
+                assign cp[k]  = acc_q[k] || p_cpk_q[k];
+            end
+            always @(posedge clk_i) begin
+                if (p_fire) p_cpk_q <= cpk;
+                if (p_fire && last_i) begin
+                    p_lbent_q <= info_lb_entering_i;
+                    p_same_q  <= info_lb_same_t_i;
+                    for (pe = 0; pe < LBK; pe = pe + 1) begin
+                        p_run_q[pe]             <= sec && {{(32-CB){1'b0}}, info_lb_count_i} > pe;
+                        p_lo_q[pe*NLO +: NLO] <= onehot_lo(info_lb_slot_i[pe*H +: H]);
+                        p_hi_q[pe*NHI +: NHI] <= onehot_hi(info_lb_slot_i[pe*H +: H]);
+                    end
+                end
             end
 
             // The fix-up travels with the ray's last leaf through the input
@@ -491,18 +587,15 @@ module csgrt_event_sort #(
             reg [LBK*NLO-1:0] s1_lo_q;
             reg [LBK*NHI-1:0] s1_hi_q;
             reg [LBK-1:0]     s1_cp_q, s1_run_q, s1_same_q, s1_lbent_q;
-            integer e;
             always @(posedge clk_i) begin
-                if (in_fire) acc_q <= last_i ? {LBK{1'b0}} : cp;
-                if (in_fire && last_i) begin
+                if (in_fire) acc_q <= p_last_q ? {LBK{1'b0}} : cp;
+                if (in_fire && p_last_q) begin
                     s1_cp_q    <= cp;
-                    s1_lbent_q <= info_lb_entering_i;
-                    s1_same_q  <= info_lb_same_t_i;
-                    for (e = 0; e < LBK; e = e + 1) begin
-                        s1_run_q[e]           <= sec && {{(32-CB){1'b0}}, info_lb_count_i} > e;
-                        s1_lo_q[e*NLO +: NLO] <= onehot_lo(info_lb_slot_i[e*H +: H]);
-                        s1_hi_q[e*NHI +: NHI] <= onehot_hi(info_lb_slot_i[e*H +: H]);
-                    end
+                    s1_lbent_q <= p_lbent_q;
+                    s1_same_q  <= p_same_q;
+                    s1_run_q   <= p_run_q;
+                    s1_lo_q    <= p_lo_q;
+                    s1_hi_q    <= p_hi_q;
                 end
                 if (!rst_ni) acc_q <= {LBK{1'b0}};
             end
@@ -559,8 +652,7 @@ module csgrt_event_sort #(
             assign fix_hi  = s2_hi_q;
             assign fix_ent = s2_ent_q;
         end else begin : g_pri
-            assign info_ok      = 1'b1;
-            assign ready_o      = in_ready;
+            assign ready_o      = p_room;
             assign info_ready_o = 1'b0;
             assign keep0   = 1'b1;
             assign keep1   = 1'b1;
@@ -579,7 +671,7 @@ module csgrt_event_sort #(
     wire full_d = (s1_done && s1_last_q) || (full_q && !handover);
     wire busy_d = handover || (busy_q && !ray_done_i);
     wire s1_valid_d = in_fire || (s1_valid_q && !s1_done);
-    wire s1_two_d   = in_fire ? (ahead0 && keep0 && ahead1 && keep1) : (s1_adv && s1_split) ? 1'b0 : s1_two_q;
+    wire s1_two_d   = in_fire ? p_two_q : (s1_adv && s1_split) ? 1'b0 : s1_two_q;
     wire fb_d       = full_d && busy_d;
     // in_ready_q's next value, from private copies of the state it reads
     // (rc_*, each loaded as its original, in an always block of its own
@@ -595,13 +687,13 @@ module csgrt_event_sort #(
     // compares the copies with the originals, and u_check_in_ready the
     // ready with its definition.
     reg rc_valid_q, rc_fb_q, rc_full_q, rc_busy_q, rc_ready_q;
-    wire rc_fire   = valid_i && rc_ready_q && info_ok;
+    wire rc_fire   = p_valid_q && rc_ready_q;
     wire rc_adv    = rc_valid_q && !rc_fb_q;
     wire rc_done   = rc_adv && !((INSERTS == 1) && s1_two_q);
     wire rc_full_d = (rc_done && s1_last_q) || (rc_full_q && !handover_q);
     wire rc_busy_d = handover_q || (rc_busy_q && !ray_done_i);
     wire rc_valid_d = rc_fire || (rc_valid_q && !rc_done);
-    wire rc_two_d  = rc_fire ? (ahead0 && keep0 && ahead1 && keep1) : s1_two_q && !rc_adv;
+    wire rc_two_d  = rc_fire ? p_two_q : s1_two_q && !rc_adv;
     wire in_ready_d = !rst_ni || !rc_valid_d || (!(rc_full_d && rc_busy_d) && !((INSERTS == 1) && rc_two_d));
     // handover_q's and its copies' (hov) next value, full_q && !busy_q after
     // the edge, from the copies too: from full_d and busy_d it took the same
@@ -623,19 +715,17 @@ module csgrt_event_sort #(
     always @(posedge clk_i) begin
         // input stage
         s1_two_q <= s1_two_d;
-        if (s1_adv && s1_split) begin   // a is in; b waits for the next clock
+        if (s1_adv && s1_split) begin   // a is in; b waits for the next clock (s1_ag: a <= b)
             s1_n_q <= 2'd1;
-            s1_a_q <= s1_b_q;
         end
         if (in_fire) begin
-            s1_n_q    <= {1'b0, ahead0 && keep0} + {1'b0, ahead1 && keep1};
-            s1_a_q    <= (swap || !ahead0) ? e1 : e0;
-            s1_b_q    <= swap ? e0 : e1;
-            s1_slo_q  <= onehot_lo(slot_i);
-            s1_shi_q  <= onehot_hi(slot_i);
-            s1_flag_q <= flag_in;
-            s1_last_q <= last_i;
-            s1_pay_q  <= payload_i;
+            s1_n_q    <= p_n_q;
+            s1_b_q    <= p_bsel_q ? p_e0_q : p_e1_q;
+            s1_slo_q  <= p_slo_q;
+            s1_shi_q  <= p_shi_q;
+            s1_flag_q <= p_flag_q;
+            s1_last_q <= p_last_q;
+            s1_pay_q  <= p_pay_q;
         end
         // fill bank
         if (handover) begin
@@ -734,14 +824,14 @@ module csgrt_event_sort #(
 
     // the pair's order by the whole key, as the cells order events
     csgrt_check_same #(.WHAT("swap (the pair ordered by t alone)")) u_check_swap (
-        .clk_i, .rst_ni, .copy_i(in_fire && swap),
-        .orig_i(in_fire && ahead0 && ahead1 && (`CSGRT_KEY(e1) < `CSGRT_KEY(e0))));
+        .clk_i, .rst_ni, .copy_i(p_fire && swap),
+        .orig_i(p_fire && ahead0 && ahead1 && (`CSGRT_KEY(e1) < `CSGRT_KEY(e0))));
 
     // the t limit keeps a whenever it keeps b (s1_n_q counts a first)
     wire keep_a = (swap || !ahead0) ? keep1 : keep0;
     wire keep_b = swap ? keep0 : keep1;
     csgrt_check_same #(.WHAT("the t limit's monotony (keeps b but not a)")) u_check_keep (
-        .clk_i, .rst_ni, .copy_i(in_fire && ahead0 && ahead1 && keep_b && !keep_a), .orig_i(1'b0));
+        .clk_i, .rst_ni, .copy_i(p_fire && ahead0 && ahead1 && keep_b && !keep_a), .orig_i(1'b0));
 
     generate
         if (N < 2 || (1 << LB) < MAX_LEAVES || NB < 2 || LOOK_BEHIND < 1 || (INSERTS != 1 && INSERTS != 2)) begin : g_bad_param

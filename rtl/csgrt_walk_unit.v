@@ -8,7 +8,7 @@
 // Input: one leaf result per transaction (see csgrt_event_sort), the ray's
 // last leaf marked, a per-ray payload taken from the last leaf. Output: one
 // record per ray, in ray order (see csgrt_walker). Latency and throughput:
-// event_sort (leaf -> fill bank 2 clocks, handover 1) plus the walker
+// event_sort (leaf -> fill bank 3 clocks (its pre-stage, its input stage), handover 1) plus the walker
 // (load 1, one event per clock, TREE_HEIGHT + 1 tree stages, output skid 1).
 // Both sides valid/ready; ready_o and valid_o are registers' functions
 // (with SECONDARY = 1 ready_o also depends on info_valid_i).
