@@ -36,6 +36,7 @@ module csgrt_contrib #(
     input  wire [15:0]        s_filter_i,   // <= 4096
     input  wire [3*16-1:0]    s_w_i,
     output wire               m_valid_o,
+    output wire               m_valid_copy_o, // m_valid_o from a register of its own (below)
     input  wire               m_ready_i,
     output wire [TAG_W-1:0]   m_tag_o,
     output wire [3*13-1:0]    m_contrib_o
@@ -137,5 +138,18 @@ module csgrt_contrib #(
     csgrt_skid #(.WIDTH(TAG_W + 39)) u_skid (
         .clk_i, .rst_ni, .valid_i(c2_valid && last), .ready_o(en), .ready_next_o(en_next), .data_i({contrib, c2_tag}),
         .valid_o(m_valid_o), .ready_i(m_ready_i), .data_o({m_contrib_o, m_tag_o}));
+    // The output's valid bit again, loaded with the skid's next value (its
+    // skid register is full exactly while en is low), as csgrt_spawn's
+    // m_valid_copy_o: the ray tree gives the child rays' port its ready
+    // from it, while m_valid_o decides the tree's events (96 loads, the
+    // first net of a path through csgrt_spawn's output skid into its beat,
+    // tools/logic_depth.py 11.19 ns on aaa564b's netlist). keep: yosys
+    // would merge the two.
+    (* keep *) reg valid_copy_q;
+    always @(posedge clk_i)
+        valid_copy_q <= rst_ni && ((m_ready_i || !m_valid_o) ? (!en || (c2_valid && last)) : m_valid_o);
+    assign m_valid_copy_o = valid_copy_q;
+    csgrt_check_same #(.WHAT("m_valid_copy_o")) u_check_valid_copy (
+        .clk_i, .rst_ni, .copy_i(valid_copy_q), .orig_i(m_valid_o));
 endmodule
 `default_nettype wire

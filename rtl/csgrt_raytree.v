@@ -354,6 +354,7 @@ module csgrt_raytree #(
 
     // contributions of shaded rays
     wire              ct_valid;
+    wire              ct_valid_ch;          // ct_valid's copy, for ch_ready_o alone
     wire              ct_ready;
     wire [CB-1:0]     ct_ctx;
     wire [38:0]       ct_contrib;
@@ -367,7 +368,8 @@ module csgrt_raytree #(
         .clk_i, .rst_ni, .s_valid_i (sr_valid_i), .s_ready_o (sr_ready_o), .s_tag_i (sr_ctx),
         .s_local_i (sr_local_i), .s_spec_i (sr_spec_x), .s_transmits_i (tx_q[sr_ctx]),
         .s_filter_i (hfilt_q[sr_ctx]), .s_w_i (w_q[sr_ctx]),
-        .m_valid_o (ct_valid), .m_ready_i (ct_ready), .m_tag_o (ct_ctx), .m_contrib_o (ct_contrib));
+        .m_valid_o (ct_valid), .m_valid_copy_o (ct_valid_ch), .m_ready_i (ct_ready), .m_tag_o (ct_ctx),
+        .m_contrib_o (ct_contrib));
 
     // ---- the ray FIFO and the spawn request FIFO ------------------------------------------
     wire                rq_push;            // E1 (below)
@@ -540,7 +542,9 @@ module csgrt_raytree #(
         end
 `endif
     assign ct_ready    = 1'b1;          // the contribution event is never refused (first in priority)
-    assign ch_ready_o  = ev0_ch;
+    // ev0_ch, from the contribution's valid copy: ch_ready_o goes on into
+    // csgrt_spawn's output skid and its beat's enable
+    assign ch_ready_o  = !ct_valid_ch && ch_valid_ev_i;
     assign hp_ready    = ev0_hp;
     assign cam_ready_o = ev0_cam;
 

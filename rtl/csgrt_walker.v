@@ -616,7 +616,12 @@ module csgrt_walker #(
     // output (the 136-load choice was the walker's longest path after
     // 6e37c85, into the output skid). The look-ahead's run can end while
     // a hit is pending, so it keeps p_out.
-    wire          rec_pend = (LA != 0) ? p_out : pend_q;
+    // pend_q itself had 151 loads, through a LUT of 142 more into the
+    // record's bits and the walker's done (tools/logic_depth.py 11.00 ns
+    // on aaa564b's netlist): the record's choice reads a copy of its own
+    // (pend_sel_q, below), as the skid's valid does (pend_res_q).
+    wire          pend_sel;
+    wire          rec_pend = (LA != 0) ? p_out : pend_sel;
     wire [OW-1:0] rec_out = rec_pend ? pend_rec_q : w_rec;
     wire [LB-1:0] rec_leaf = rec_out[LEAF_POS +: LB];                 // the hit leaf (miss: 0)
     wire [LB-1:0] leaf_out = rec_pend ? (pend_surf ? t_leaf : rec_leaf) : (w_hit ? w_sleaf : rec_leaf);
@@ -645,6 +650,14 @@ module csgrt_walker #(
         if (!rst_ni) pend_q <= 1'b0;
         else if (ce) pend_q <= pend_d;
     end
+    reg pend_sel_q;
+    (* keep *) always @(posedge clk_i) begin
+        if (!rst_ni) pend_sel_q <= 1'b0;
+        else if (ce) pend_sel_q <= pend_d;
+    end
+    assign pend_sel = pend_sel_q;
+    csgrt_check_same #(.WHAT("pend_sel_q (pend_q's copy for the record's choice)")) u_check_pend_sel (
+        .clk_i, .rst_ni, .copy_i(pend_sel_q), .orig_i(pend_q));
     // a hit parks only without one pending (the walk's records need live,
     // which needs !pend_q), so pend_rec_q above holds the parked one
     csgrt_check_same #(.WHAT("a park while a hit is pending (pend_rec_q)")) u_check_park (
