@@ -152,13 +152,20 @@ module csgrt_scene_loader #(
     reg  [TREE_HEIGHT-1:0] op_pos_q;                      // heap position - 1 (1 <= tree_r <= SLOTS)
     reg  [LEAF_BITS-1:0]   tree_leaf_q;
     // The word's checks, made in stage 0 and applied to error_o in stage 1:
-    // a header word's code (s1_err_q, 0: fine) and the tree's height
+    // a header word's code (s1_e_q, below; none: fine) and the tree's height
     // (s1_bad_height_q). Made on stage 1's word, the height's 32-bit compare
     // hung on s1_w_q, whose loads (every configuration register) spread
     // across the die, and ran on into error_o: the routed effects build's
     // critical path (docs/fpga.md). A load is not timing-critical; its
     // registers are.
-    reg  [3:0]             s1_err_q;
+    // The header code as one flag per code (s1_e_q[c-1]: code c), each the
+    // test of its own header word: the words are one per position, so at
+    // most one flag is set, and the code is their OR (two LUT levels in
+    // stage 1). The code itself as the register took the six tests as a
+    // priority chain, 7 LUT levels from the word into s1_err_q (tools/
+    // logic_depth.py 11.10 ns, 62 endpoints over 10 ns on aaa564b's netlist).
+    reg  [3:0]             s1_e_q;
+    wire [3:0]             s1_err = s1_e_q[3] ? 4'd4 : {2'b0, s1_e_q[1] | s1_e_q[2], s1_e_q[0] | s1_e_q[2]};
     reg                    s1_bad_height_q;
     // Stage 2 writes the camera, the lights, the materials and the leaves,
     // from enables (and for the memories an address) decoded in stage 1:
@@ -246,24 +253,22 @@ module csgrt_scene_loader #(
                 tree_leaf_ok_q  <= tree_leaf0 < MAX_LEAVES;
                 op_pos_q        <= tree_r0[TREE_HEIGHT-1:0] - 1'b1;
                 tree_leaf_q     <= tree_leaf0[LEAF_BITS-1:0];
-                s1_err_q        <= 4'd0;
+                s1_e_q          <= 4'd0;
                 s1_bad_height_q <= word_i != TREE_HEIGHT;
                 // the header (the other header words, program length,
                 // trace depth and stack, are not needed here)
-                if (hdr_q[H_MAGIC]   && word_i != MAGIC)   s1_err_q <= 4'd1;
-                if (hdr_q[H_VERSION] && word_i != VERSION) s1_err_q <= 4'd1;
-                if (hdr_q[H_BITS]    && word_i != BITS)    s1_err_q <= 4'd2;
+                s1_e_q[0] <= (hdr_q[H_MAGIC] && word_i != MAGIC) || (hdr_q[H_VERSION] && word_i != VERSION);
+                s1_e_q[1] <= hdr_q[H_BITS] && word_i != BITS;
                 if (hdr_q[H_SIZE]) begin
                     width_o  <= word_i[11:0];
                     height_o <= word_i[27:16];
                 end
                 if (hdr_q[H_LEAVES]) begin
-                    if (word_i > MAX_LEAVES) s1_err_q <= 4'd3;
+                    s1_e_q[2] <= word_i > MAX_LEAVES;
                     num_leaves_o <= word_i[LEAF_BITS:0];
                 end
-                if (hdr_q[H_MATERIALS] && word_i > MAX_MATERIALS + 1) s1_err_q <= 4'd4;
+                s1_e_q[3] <= (hdr_q[H_MATERIALS] && word_i > MAX_MATERIALS + 1) || (hdr_q[H_LIGHTS] && word_i > MAX_LIGHTS);
                 if (hdr_q[H_LIGHTS]) begin
-                    if (word_i > MAX_LIGHTS) s1_err_q <= 4'd4;
                     num_lights_o <= word_i[3:0];
                 end
                 if (hdr_q[H_MAX_TRACE])     max_trace_o     <= (word_i > 32'd255) ? 8'd255 : word_i[7:0];
@@ -278,7 +283,7 @@ module csgrt_scene_loader #(
 
             if (s1_valid_q) begin
                 // ---- stage 1: the sections' writes
-                if (s1_err_q != 4'd0) error_o <= s1_err_q;   // a header word's check
+                if (s1_e_q != 4'd0) error_o <= s1_err;   // a header word's check
 
                 // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3): stage 2's enables
                 if (in_camera_q)

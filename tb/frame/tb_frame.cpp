@@ -202,6 +202,21 @@ TEST(Frame, RefusesAnImageForAnotherConfiguration) {
     EXPECT_EQ(load_status(words), 2);
 }
 
+// every header word the loader checks, each with its code (csgrt_scene_loader's
+// header and docs/fpga.md: 1 magic or version, 3 leaves, 4 materials or lights)
+TEST(Frame, RefusesBadHeaderWordsWithTheirCodes) {
+    const std::vector<uint32_t> good = compile_words(scene_file("basic"), 8, 6);
+    ASSERT_EQ(load_status(good), 0);
+    const struct { int word; uint32_t value; int code; } cases[] = {
+        {H_MAGIC, good[H_MAGIC] ^ 1u, 1}, {H_VERSION, good[H_VERSION] + 1u, 1},
+        {H_LEAVES, 1000u, 3}, {H_MATERIALS, 1000u, 4}, {H_LIGHTS, 100u, 4}};
+    for (const auto& c : cases) {
+        std::vector<uint32_t> words = good;
+        words[c.word] = c.value;
+        EXPECT_EQ(load_status(words), c.code) << "header word " << c.word << " = " << c.value;
+    }
+}
+
 #if FRAME_SHADOWS || FRAME_REFLECTION
 // Effect builds: the ray tree (csgrt_raytree, csgrt_spawn, secondary rays in
 // the walk units) against the model's accumulate_fx, pixel for pixel.
