@@ -126,6 +126,7 @@ module csgrt_raytree #(
     // spawned children
     input  wire                      ch_valid_i,
     input  wire                      ch_valid_ev_i,    // ch_valid_i from a flip-flop of its own: the event choice's
+    input  wire                      ch_valid_rec_i,   // and from another: the pushed record's choice
     output wire                      ch_ready_o,
     input  wire [2:0]                ch_kind_i,        // csgrt_spawn's kinds
     input  wire [KW-1:0]             ch_light_i,
@@ -1125,8 +1126,11 @@ module csgrt_raytree #(
     // front of them, these ~1,000 registers hung on two ~460-load nets of
     // the event decode (tools/logic_depth.py: 18.57 ns, the whole design's
     // longest path).
+    // (The first choice reads the child port's valid from a copy of its own,
+    // ch_valid_rec_i: ch_valid_i had 408 loads, the first net of a path into
+    // the ray FIFO's data, tools/logic_depth.py 10.96 ns on aaa564b.)
     always @(posedge clk_i) begin
-        if (ch_valid_i) begin
+        if (ch_valid_rec_i) begin
             // a shadow ray to a light, from the hit's near side
             rq_rec  <= rec(1'b1, ch_user_i, ch_light_i, 48'd0, 4'd0, {3{ONE}}, 5'd0, ch_dist_i);
             rq_o    <= ch_p_i;

@@ -228,6 +228,7 @@ module csgrt_spawn #(
     // output stream: one child ray
     output wire                                   m_valid_o,
     output wire                                   m_valid_copy_o,   // m_valid_o again, from a flip-flop of its own
+    output wire                                   m_valid_rec_o,    // and once more (for the ray tree's record choice)
     input  wire                                   m_ready_i,
     output wire                                   m_last_o,
     output wire [2:0]                             m_kind_o,
@@ -1282,6 +1283,16 @@ module csgrt_spawn #(
     assign m_valid_copy_o = valid_copy_q;
     csgrt_check_same #(.WHAT("m_valid_copy_o")) u_check_valid_copy (
         .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(valid_copy_q), .orig_i(m_valid_o));
+    // and a third (m_valid_rec_o) for the ray tree's pushed record, whose
+    // first choice (a shadow ray from this port or not) took m_valid_o's
+    // 408 loads into the ray FIFO's data (tools/logic_depth.py 10.96 ns,
+    // 63 endpoints, on aaa564b's netlist)
+    (* keep *) reg valid_rec_q;
+    always @(posedge clk_i)
+        valid_rec_q <= rst_ni && ((m_ready_i || !m_valid_o) ? (!en_c || (u2_valid && last_c)) : m_valid_o);
+    assign m_valid_rec_o = valid_rec_q;
+    csgrt_check_same #(.WHAT("m_valid_rec_o")) u_check_valid_rec (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(valid_rec_q), .orig_i(m_valid_o));
 
     generate
         if (BITS < 12 || BITS > 32 || MAX_LIGHTS < 1 || USER_WIDTH < 1) begin : g_bad_param

@@ -485,7 +485,7 @@ module csgrt_top #(
             wire [10*BITS-1:0]     sp_coef;
             wire [MAX_LIGHTS-1:0]  sp_lights;
             wire [CB-1:0]          sp_user;
-            wire                   ch_valid, ch_valid_ev, ch_ready, ch_lit, ch_last, ch_in_range;
+            wire                   ch_valid, ch_valid_ev, ch_valid_rec, ch_ready, ch_lit, ch_last, ch_in_range;
             wire [2:0]             ch_kind;
             wire [KW-1:0]          ch_light;
             wire [3*BITS-1:0]      ch_p, ch_d;
@@ -583,7 +583,7 @@ module csgrt_top #(
                 .sp_valid_o (sp_valid), .sp_ready_i (sp_ready), .sp_o_o (sp_o), .sp_d_o (sp_d), .sp_t_o (sp_t),
                 .sp_coef_o (sp_coef), .sp_lights_o (sp_lights), .sp_reflect_o (sp_reflect), .sp_user_o (sp_user),
                 .sp_refract_o (sp_refract), .sp_ior_from_o (sp_ior_from), .sp_ior_to_o (sp_ior_to),
-                .ch_valid_i (ch_valid), .ch_valid_ev_i (ch_valid_ev), .ch_ready_o (ch_ready), .ch_kind_i (ch_kind), .ch_light_i (ch_light),
+                .ch_valid_i (ch_valid), .ch_valid_ev_i (ch_valid_ev), .ch_valid_rec_i (ch_valid_rec), .ch_ready_o (ch_ready), .ch_kind_i (ch_kind), .ch_light_i (ch_light),
                 .ch_p_i (ch_p), .ch_d_i (ch_d), .ch_dist_i (ch_dist), .ch_lit_i (ch_lit), .ch_last_i (ch_last),
                 .ch_user_i (ch_user),
                 .sh_valid_o (sh_valid), .sh_ready_i (sh_ready), .sh_tag_o (sh_tag), .sh_o_o (sh_o), .sh_d_o (sh_d),
@@ -601,7 +601,7 @@ module csgrt_top #(
                 .s_valid_i (sp_valid), .s_ready_o (sp_ready), .s_o_i (sp_o), .s_d_i (sp_d), .s_t_i (sp_t),
                 .s_coef_i (sp_coef), .s_ior_from_i (sp_ior_from), .s_ior_to_i (sp_ior_to), .s_lights_i (sp_lights),
                 .s_reflect_i (sp_reflect), .s_refract_i (sp_refract), .s_continue_i (1'b0), .s_user_i (sp_user),
-                .m_valid_o (ch_valid), .m_valid_copy_o (ch_valid_ev), .m_ready_i (ch_ready), .m_kind_o (ch_kind), .m_light_o (ch_light),
+                .m_valid_o (ch_valid), .m_valid_copy_o (ch_valid_ev), .m_valid_rec_o (ch_valid_rec), .m_ready_i (ch_ready), .m_kind_o (ch_kind), .m_light_o (ch_light),
                 .m_o_o (ch_p), .m_in_range_o (ch_in_range), .m_d_o (ch_d), .m_dist_o (ch_dist), .m_lit_o (ch_lit),
                 .m_last_o (ch_last), .m_user_o (ch_user)
             );

@@ -34,6 +34,7 @@ module tb_spawn (
     output wire [12:0]      b12_dist_o,
     output wire              b12_lit_o,
     output wire              b12_valid_copy_o,
+    output wire              b12_valid_rec_o,
     output wire [15:0]    b12_user_o,
     input  wire              b16_clk_i,
     input  wire              b16_rst_ni,
@@ -62,6 +63,7 @@ module tb_spawn (
     output wire [16:0]      b16_dist_o,
     output wire              b16_lit_o,
     output wire              b16_valid_copy_o,
+    output wire              b16_valid_rec_o,
     output wire [15:0]    b16_user_o,
     input  wire              b24_clk_i,
     input  wire              b24_rst_ni,
@@ -90,6 +92,7 @@ module tb_spawn (
     output wire [24:0]      b24_dist_o,
     output wire              b24_lit_o,
     output wire              b24_valid_copy_o,
+    output wire              b24_valid_rec_o,
     output wire [15:0]    b24_user_o,
     input  wire              b32_clk_i,
     input  wire              b32_rst_ni,
@@ -118,6 +121,7 @@ module tb_spawn (
     output wire [32:0]      b32_dist_o,
     output wire              b32_lit_o,
     output wire              b32_valid_copy_o,
+    output wire              b32_valid_rec_o,
     output wire [15:0]    b32_user_o,
     input  wire              b16r_clk_i,
     input  wire              b16r_rst_ni,
@@ -146,6 +150,7 @@ module tb_spawn (
     output wire [16:0]      b16r_dist_o,
     output wire              b16r_lit_o,
     output wire              b16r_valid_copy_o,
+    output wire              b16r_valid_rec_o,
     output wire [15:0]    b16r_user_o,
     input  wire              b16s_clk_i,
     input  wire              b16s_rst_ni,
@@ -174,6 +179,7 @@ module tb_spawn (
     output wire [16:0]      b16s_dist_o,
     output wire              b16s_lit_o,
     output wire              b16s_valid_copy_o,
+    output wire              b16s_valid_rec_o,
     output wire [15:0]    b16s_user_o
 );
 
@@ -183,7 +189,7 @@ module tb_spawn (
         .s_coef_i(b12_coef_i), .s_ior_from_i(b12_ior_from_i), .s_ior_to_i(b12_ior_to_i),
         .s_lights_i(b12_lights_i), .s_reflect_i(b12_reflect_i), .s_refract_i(b12_refract_i),
         .s_continue_i(b12_continue_i), .s_user_i(b12_user_i),
-        .m_valid_o(b12_valid_o), .m_valid_copy_o(b12_valid_copy_o), .m_ready_i(b12_ready_i), .m_last_o(b12_last_o), .m_kind_o(b12_kind_o),
+        .m_valid_o(b12_valid_o), .m_valid_copy_o(b12_valid_copy_o), .m_valid_rec_o(b12_valid_rec_o), .m_ready_i(b12_ready_i), .m_last_o(b12_last_o), .m_kind_o(b12_kind_o),
         .m_light_o(b12_light_o), .m_o_o(b12_o_o), .m_in_range_o(b12_in_range_o), .m_d_o(b12_d_o),
         .m_dist_o(b12_dist_o), .m_lit_o(b12_lit_o), .m_user_o(b12_user_o));
 
@@ -193,7 +199,7 @@ module tb_spawn (
         .s_coef_i(b16_coef_i), .s_ior_from_i(b16_ior_from_i), .s_ior_to_i(b16_ior_to_i),
         .s_lights_i(b16_lights_i), .s_reflect_i(b16_reflect_i), .s_refract_i(b16_refract_i),
         .s_continue_i(b16_continue_i), .s_user_i(b16_user_i),
-        .m_valid_o(b16_valid_o), .m_valid_copy_o(b16_valid_copy_o), .m_ready_i(b16_ready_i), .m_last_o(b16_last_o), .m_kind_o(b16_kind_o),
+        .m_valid_o(b16_valid_o), .m_valid_copy_o(b16_valid_copy_o), .m_valid_rec_o(b16_valid_rec_o), .m_ready_i(b16_ready_i), .m_last_o(b16_last_o), .m_kind_o(b16_kind_o),
         .m_light_o(b16_light_o), .m_o_o(b16_o_o), .m_in_range_o(b16_in_range_o), .m_d_o(b16_d_o),
         .m_dist_o(b16_dist_o), .m_lit_o(b16_lit_o), .m_user_o(b16_user_o));
 
@@ -203,7 +209,7 @@ module tb_spawn (
         .s_coef_i(b24_coef_i), .s_ior_from_i(b24_ior_from_i), .s_ior_to_i(b24_ior_to_i),
         .s_lights_i(b24_lights_i), .s_reflect_i(b24_reflect_i), .s_refract_i(b24_refract_i),
         .s_continue_i(b24_continue_i), .s_user_i(b24_user_i),
-        .m_valid_o(b24_valid_o), .m_valid_copy_o(b24_valid_copy_o), .m_ready_i(b24_ready_i), .m_last_o(b24_last_o), .m_kind_o(b24_kind_o),
+        .m_valid_o(b24_valid_o), .m_valid_copy_o(b24_valid_copy_o), .m_valid_rec_o(b24_valid_rec_o), .m_ready_i(b24_ready_i), .m_last_o(b24_last_o), .m_kind_o(b24_kind_o),
         .m_light_o(b24_light_o), .m_o_o(b24_o_o), .m_in_range_o(b24_in_range_o), .m_d_o(b24_d_o),
         .m_dist_o(b24_dist_o), .m_lit_o(b24_lit_o), .m_user_o(b24_user_o));
 
@@ -213,7 +219,7 @@ module tb_spawn (
         .s_coef_i(b32_coef_i), .s_ior_from_i(b32_ior_from_i), .s_ior_to_i(b32_ior_to_i),
         .s_lights_i(b32_lights_i), .s_reflect_i(b32_reflect_i), .s_refract_i(b32_refract_i),
         .s_continue_i(b32_continue_i), .s_user_i(b32_user_i),
-        .m_valid_o(b32_valid_o), .m_valid_copy_o(b32_valid_copy_o), .m_ready_i(b32_ready_i), .m_last_o(b32_last_o), .m_kind_o(b32_kind_o),
+        .m_valid_o(b32_valid_o), .m_valid_copy_o(b32_valid_copy_o), .m_valid_rec_o(b32_valid_rec_o), .m_ready_i(b32_ready_i), .m_last_o(b32_last_o), .m_kind_o(b32_kind_o),
         .m_light_o(b32_light_o), .m_o_o(b32_o_o), .m_in_range_o(b32_in_range_o), .m_d_o(b32_d_o),
         .m_dist_o(b32_dist_o), .m_lit_o(b32_lit_o), .m_user_o(b32_user_o));
 
@@ -225,7 +231,7 @@ module tb_spawn (
         .s_coef_i(b16r_coef_i), .s_ior_from_i(b16r_ior_from_i), .s_ior_to_i(b16r_ior_to_i),
         .s_lights_i(b16r_lights_i), .s_reflect_i(b16r_reflect_i), .s_refract_i(b16r_refract_i),
         .s_continue_i(b16r_continue_i), .s_user_i(b16r_user_i),
-        .m_valid_o(b16r_valid_o), .m_valid_copy_o(b16r_valid_copy_o), .m_ready_i(b16r_ready_i), .m_last_o(b16r_last_o), .m_kind_o(b16r_kind_o),
+        .m_valid_o(b16r_valid_o), .m_valid_copy_o(b16r_valid_copy_o), .m_valid_rec_o(b16r_valid_rec_o), .m_ready_i(b16r_ready_i), .m_last_o(b16r_last_o), .m_kind_o(b16r_kind_o),
         .m_light_o(b16r_light_o), .m_o_o(b16r_o_o), .m_in_range_o(b16r_in_range_o), .m_d_o(b16r_d_o),
         .m_dist_o(b16r_dist_o), .m_lit_o(b16r_lit_o), .m_user_o(b16r_user_o));
 
@@ -237,7 +243,7 @@ module tb_spawn (
         .s_coef_i(b16s_coef_i), .s_ior_from_i(b16s_ior_from_i), .s_ior_to_i(b16s_ior_to_i),
         .s_lights_i(b16s_lights_i), .s_reflect_i(b16s_reflect_i), .s_refract_i(b16s_refract_i),
         .s_continue_i(b16s_continue_i), .s_user_i(b16s_user_i),
-        .m_valid_o(b16s_valid_o), .m_valid_copy_o(b16s_valid_copy_o), .m_ready_i(b16s_ready_i), .m_last_o(b16s_last_o), .m_kind_o(b16s_kind_o),
+        .m_valid_o(b16s_valid_o), .m_valid_copy_o(b16s_valid_copy_o), .m_valid_rec_o(b16s_valid_rec_o), .m_ready_i(b16s_ready_i), .m_last_o(b16s_last_o), .m_kind_o(b16s_kind_o),
         .m_light_o(b16s_light_o), .m_o_o(b16s_o_o), .m_in_range_o(b16s_in_range_o), .m_d_o(b16s_d_o),
         .m_dist_o(b16s_dist_o), .m_lit_o(b16s_lit_o), .m_user_o(b16s_user_o));
 endmodule
