@@ -84,6 +84,9 @@ module csgrt_board_ctrl #(
     // next value (tools/logic_depth.py 11.49 ns, 5 LUT levels, on 18b6b1d's
     // 24-bit netlist). The queue adds a clock before each message's first
     // byte and none between its bytes.
+    // Only a message's own bytes are written (the bytes above its length
+    // are never sent): zeroing them put the state decode into every bit's
+    // reset (LSR) logic (tools/logic_depth.py 12.38 ns on 833bdd6).
     reg [63:0] nb_q;                     // the queued message, first byte in nb_q[7:0]
     reg [3:0]  nn_q;                     // its length
     reg        nb_full_q;                // nb_q holds a message not yet in ob_q
@@ -149,7 +152,7 @@ module csgrt_board_ctrl #(
             // the sender: ob_q shifts out, then takes the queued message
             // (tx_valid_o is !on_zero_q: the two never meet)
             if (tx_valid_o && tx_ready_i) begin
-                ob_q <= {8'd0, ob_q[63:8]};
+                ob_q <= {ob_q[7:0], ob_q[63:8]};   // (rotated: the bytes past on_q are never sent)
                 on_q <= on_q - 4'd1;
                 on_zero_q <= on_q == 4'd1;
             end else if (on_zero_q && nb_full_q) begin
@@ -173,7 +176,7 @@ module csgrt_board_ctrl #(
                     end else if (rx_data_i == 8'h49 && !nb_full_q) begin
                         // (an 'I' while the last reply still waits in nb_q
                         // is dropped: a host asks once and reads 6 bytes)
-                        nb_q      <= {16'd0, ID_EFFECTS, ID_HEIGHT, ID_LEAVES, ID_BITS, 8'h49, 8'hA5};
+                        nb_q[47:0] <= {ID_EFFECTS, ID_HEIGHT, ID_LEAVES, ID_BITS, 8'h49, 8'hA5};
                         nn_q      <= 4'd6;
                         nb_full_q <= 1'b1;
                     end
@@ -201,7 +204,7 @@ module csgrt_board_ctrl #(
             end
             S_STATUS:
                 if (!nb_full_q) begin
-                    nb_q        <= {48'd0, 4'd0, code_q, 8'hA5};
+                    nb_q[15:0]  <= {4'd0, code_q, 8'hA5};
                     nn_q        <= 4'd2;
                     nb_full_q   <= 1'b1;
                     last_code_o <= code_q;
@@ -223,7 +226,7 @@ module csgrt_board_ctrl #(
                 end
                 if (done) done_seen_q <= 1'b1;
                 if (pix_full_q && !nb_full_q) begin
-                    nb_q        <= {40'd0, pix_q[7:0], pix_q[15:8], pix_q[23:16]};
+                    nb_q[23:0]  <= {pix_q[7:0], pix_q[15:8], pix_q[23:16]};
                     nn_q        <= 4'd3;
                     nb_full_q   <= 1'b1;
                     pix_full_q  <= 1'b0;
