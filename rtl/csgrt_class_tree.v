@@ -4,7 +4,8 @@
 // on a complete binary tree of height TREE_HEIGHT (classify_layout() of
 // model/tree_layout.cpp).
 //
-// Configuration (static while events flow; from the scene's TreeLayout):
+// Configuration (static while events flow, and for a clock before the first
+// event after a change; from the scene's TreeLayout):
 //   node_op_i    2 bits per heap position i = 1 .. 2^H-1 at [2i +: 2]
 //                (root 1, children 2i, 2i+1; position 0 unused), LayoutOp
 //                codes 0 PASS, 1 ADD, 2 SUB, 3 AND
@@ -105,6 +106,82 @@ module csgrt_class_tree #(
         endcase
     endfunction
 
+    // The path's node at one height: the full table (csgrt_class_node) with
+    // the sibling IN m or OUT (sin, m; its "from" is air), the path p on
+    // the side on_right says, and the air tests of the path's fields given
+    // as flags (pfz: p's from is air, ptz: its to is air) instead of made
+    // on p's bits: the two 8-bit zero tests on the path register, then the
+    // table's choice, were the longest paths of the whole design
+    // (tools/logic_depth.py 12.20 ns, 6 LUT levels, g_path[3].path_q ->
+    // g_path[4].path_q, on aaa564b's netlist). It returns the node's
+    // classification with its own flags {c, fz, tz}, from the flags it was
+    // given and mz (m is air): every field of c is a field of p, m or air.
+    // The same c as csgrt_class_node (u_check_node compares them).
+    // Written as a choice of sources per field (the path's, the sibling's
+    // material, air), decided once from the few control bits and applied
+    // as one LUT per field bit: as a priority chain over the cases the
+    // decision ran on through the bits' multiplexers (10.45 ns out of
+    // context against 9.24 with the table's own zero tests).
+    localparam [1:0] K_OUT = 2'd0, K_IN = 2'd1, K_BORDER = 2'd2;
+    localparam [1:0] F_P = 2'd0, F_M = 2'd1, F_AIR = 2'd2;            // a field's source
+    localparam [1:0] KS_P = 2'd0, KS_S = 2'd1, KS_B = 2'd2, KS_OUT = 2'd3;   // the kind's
+    function automatic [CW+1:0] path_node(input [1:0] op, input [CW-1:0] p, input pfz, input ptz,
+                                          input sin, input [MB-1:0] m, input mz, input on_right);
+        reg [1:0]    pk, fs, ts, ks;
+        reg [MB-1:0] pf, pt, f, t;
+        reg [1:0]    k;
+        reg          fz, tz;
+        begin
+            pk = p[CW-1 -: 2];
+            pf = p[MB +: MB];
+            pt = p[0 +: MB];
+            // the case's sources: the path P (F_P, F_P, KS_P), the sibling S
+            // (F_AIR, F_M, KS_S), OUT (F_AIR, F_AIR, KS_OUT), or a BORDER of
+            // the sibling's material and a field of the path or air
+            {ks, fs, ts} = {KS_P, F_P, F_P};
+            if (!on_right) begin                                // node(op, path, sibling)
+                case (op)
+                    OP_ADD:  if (sin) {ks, fs, ts} = {KS_S, F_AIR, F_M};
+                    OP_SUB:  if (sin) {ks, fs, ts} = {KS_OUT, F_AIR, F_AIR};
+                    OP_AND:  if (pk == K_OUT || !sin) {ks, fs, ts} = {KS_OUT, F_AIR, F_AIR};
+                    default: ;                                  // PASS: the path
+                endcase
+            end else begin                                      // node(op, sibling, path)
+                case (op)
+                    OP_ADD:
+                        if (pk == K_IN || !sin) ;                                   // r IN owns; OUT ++ r
+                        else if (pk == K_OUT)   {ks, fs, ts} = {KS_S, F_AIR, F_M};
+                        else if (pfz)           {ks, fs, ts} = {KS_B, F_M, F_P};    // BORDER m,d
+                        else if (ptz)           {ks, fs, ts} = {KS_B, F_P, F_M};    // BORDER c,m
+                    OP_SUB:
+                        if (pk == K_OUT)        {ks, fs, ts} = {KS_S, F_AIR, F_M};
+                        else if (pk == K_IN || !sin) {ks, fs, ts} = {KS_OUT, F_AIR, F_AIR};
+                        else if (pfz)           {ks, fs, ts} = {KS_B, F_M, F_AIR};
+                        else if (ptz)           {ks, fs, ts} = {KS_B, F_AIR, F_M};
+                        else                    {ks, fs, ts} = {KS_OUT, F_AIR, F_AIR};
+                    OP_AND:
+                        if (!sin || pk == K_OUT) {ks, fs, ts} = {KS_OUT, F_AIR, F_AIR};
+                        else if (pk == K_IN)     {ks, fs, ts} = {KS_S, F_AIR, F_M};
+                        else if (pfz)            {ks, fs, ts} = {KS_B, F_AIR, F_M};
+                        else if (ptz)            {ks, fs, ts} = {KS_B, F_M, F_AIR};
+                        else                     {ks, fs, ts} = {KS_S, F_AIR, F_M};
+                    default:                     {ks, fs, ts} = {KS_S, F_AIR, F_M};   // PASS: the sibling
+                endcase
+            end
+            f  = (fs == F_P) ? pf : (fs == F_M) ? m : {MB{1'b0}};
+            t  = (ts == F_P) ? pt : (ts == F_M) ? m : {MB{1'b0}};
+            fz = (fs == F_P) ? pfz : (fs == F_M) ? mz : 1'b1;
+            tz = (ts == F_P) ? ptz : (ts == F_M) ? mz : 1'b1;
+            case (ks)
+                KS_P:    k = pk;
+                KS_S:    k = {1'b0, sin};
+                KS_B:    k = K_BORDER;
+                default: k = K_OUT;
+            endcase
+            path_node = {k, f, t, fz, tz};
+        end
+    endfunction
+
     // The IN/OUT values of every slot and node below the root, in heap order
     // (arrays of IW-bit words: Verilator reads and writes each as a word of
     // its own): slot s at NS + s, from the flags (combinational); node i at
@@ -135,11 +212,29 @@ module csgrt_class_tree #(
     reg  [IW-1:0] sib0_q;                  // the sibling slot's {used, material}
     reg           sib_in0_q;               // ... and its flag
     reg  [1:0]    op1_q;
+    // the path's air flags (path_node): the slot's material is air, tested
+    // per slot on the configuration into a register of its own (slot_mz_q,
+    // loaded on every clock: hence the configuration's clock of notice,
+    // above) and read by the slot as slot_m is. Tested on the event's slot
+    // (behind slot_m's choice: two LUT levels more), or per slot but
+    // without the register (abc merged the tests into the choice), stage 0
+    // was the module's longest path (tools/logic_depth.py 10.18 ns out of
+    // context, against 9.32 before the flags). A check compares it.
+    reg  [NS-1:0] slot_mz_q;
+    reg           pfz0_q, ptz0_q;
+    integer       sz;
+    always @(posedge clk_i)
+        for (sz = 0; sz < NS; sz = sz + 1) slot_mz_q[sz] <= slot_mat_i[sz*MB +: MB] == {MB{1'b0}};
+    csgrt_check_same #(.WHAT("slot_mz_q (the slot's material is air; the configuration changed under an event?)")) u_check_slot_mz (
+        .clk_i, .rst_ni, .copy_i(valid_i && ce_i && slot_mz_q[slot_i]),
+        .orig_i(valid_i && ce_i && slot_m == {MB{1'b0}}));
     always @(posedge clk_i)
         if (ce_i) begin
             flags_q <= alt_i ? flags_alt_i : flags_i;
             slot0_q <= slot_i;
             path0_q <= entering_i ? {2'd2, {MB{1'b0}}, slot_m} : {2'd2, slot_m, {MB{1'b0}}};
+            pfz0_q  <= entering_i || slot_mz_q[slot_i];
+            ptz0_q  <= !entering_i || slot_mz_q[slot_i];
             sib0_q  <= sib_in;
             sib_in0_q <= sib_flag_i;
             op1_q   <= op1_in;
@@ -182,8 +277,19 @@ module csgrt_class_tree #(
     // the pipeline, as the node levels of the whole tree were.
     wire [CW-1:0] path_w [0:H];      // the path's classification at height j (stage j)
     wire [H-1:0]  slot_w [0:H];      // the event's slot at stage j
+    wire          pfz_w  [0:H];      // path_w[j]'s from is air
+    wire          ptz_w  [0:H];      // path_w[j]'s to is air
+    // stage j holds an event (for the checks only: synthesis drops them,
+    // and with them these; the stages run on junk between events)
+    reg  [H:0]    chk_vld_q;
+    always @(posedge clk_i)
+        if (!rst_ni)   chk_vld_q <= {(H + 1){1'b0}};
+        else if (ce_i) chk_vld_q <= {chk_vld_q[H-1:0], valid_i};
+    wire unused_chk_vld = chk_vld_q[H];   // the root's output (valid_o comes from u_tag)
     assign path_w[0] = path0_q;
     assign slot_w[0] = slot0_q;
+    assign pfz_w[0]  = pfz0_q;
+    assign ptz_w[0]  = ptz0_q;
     generate
         for (j = 1; j <= H; j = j + 1) begin : g_path
             localparam NL = NS >> (j - 1);             // slots or nodes at height j-1
@@ -246,21 +352,37 @@ module csgrt_class_tree #(
             // path_q). A sibling is IN m or OUT (its "from" field is zero),
             // so each node, with one operand of that form, maps to less than
             // the full table.
+            // The node on the path by path_node, with the path's air flags;
+            // csgrt_class_node's full table for either side, the reference
+            // in simulation (synthesis drops it: nothing reads it there)
+            wire          sib_mz = sib[MB-1:0] == {MB{1'b0}};
+            wire [CW+1:0] cf = path_node(op, path_w[j-1], pfz_w[j-1], ptz_w[j-1], sib[MB], sib[MB-1:0],
+                                         sib_mz, on_right);
+            wire [CW-1:0] c  = cf[CW+1:2];
             wire [CW-1:0] c_sib_right, c_sib_left;
             csgrt_class_node #(.MAT_BITS(MB)) u_node_r (
                 .op_i(op), .l_i(path_w[j-1]), .r_i(sib_c), .c_o(c_sib_right));
             csgrt_class_node #(.MAT_BITS(MB)) u_node_l (
                 .op_i(op), .l_i(sib_c), .r_i(path_w[j-1]), .c_o(c_sib_left));
-            wire [CW-1:0] c = on_right ? c_sib_left : c_sib_right;
+            csgrt_check_same #(.WIDTH(CW + 2), .WHAT("path_node (against csgrt_class_node, and its air flags)")) u_check_node (
+                .clk_i, .rst_ni, .copy_i(ce_i && chk_vld_q[j-1] ? cf : {(CW + 2){1'b0}}),
+                .orig_i(ce_i && chk_vld_q[j-1] ? {on_right ? c_sib_left : c_sib_right,
+                                                  c[MB +: MB] == {MB{1'b0}}, c[0 +: MB] == {MB{1'b0}}}
+                                               : {(CW + 2){1'b0}}));
             reg [CW-1:0] path_q;
             reg [H-1:0]  slot_q;
+            reg          pfz_q, ptz_q;
             always @(posedge clk_i)
                 if (ce_i) begin
                     path_q <= c;
                     slot_q <= slot_w[j-1];
+                    pfz_q  <= cf[1];
+                    ptz_q  <= cf[0];
                 end
             assign path_w[j] = path_q;
             assign slot_w[j] = slot_q;
+            assign pfz_w[j]  = pfz_q;
+            assign ptz_w[j]  = ptz_q;
             if (j == H) begin : g_border
                 // border_o a clock early: whether the root's classification
                 // c is BORDER from, to with from != to, derived from the
@@ -277,11 +399,11 @@ module csgrt_class_tree #(
                 wire          sin = sib[MB];                    // the sibling is IN m (else OUT)
                 wire          p_io = pk == 2'd0 || pk == 2'd1;  // the path is OUT or IN
                 wire          pb = pk == 2'd2 && pf != pt;      // the path itself is a crossing
-                wire          m_nz = m != {MB{1'b0}};
+                wire          m_nz = !sib_mz;
                 wire          m_ne_pt = m != pt;
                 wire          pf_ne_m = pf != m;
-                wire          pf_z = pf == {MB{1'b0}};
-                wire          pt_z = pt == {MB{1'b0}};
+                wire          pf_z = pfz_w[j-1];   // the path's air flags
+                wire          pt_z = ptz_w[j-1];
                 reg           b_right, b_left;                  // path on the left / on the right
                 always @* begin
                     // node(op, path, sib): c is the path or not a crossing

@@ -142,6 +142,10 @@ void run(int configs, int events_per_config, uint64_t seed) {
                 put(used, lay.leaf_slot[l], 1, 1);
             }
         });
+        // the configuration's clock of notice (csgrt_class_tree's header)
+        p.ce() = 1;
+        p.valid() = 0;
+        tick();
         struct Want {
             Class c;
             uint64_t cyc;
