@@ -703,7 +703,10 @@ void throughput(bool reflection = true, bool refraction = true) {
     // the children's stages before the output skid: C0, X, C3 and U2 (2F+19
     // clocks); time-shared, U2's three divisions on one divider take
     // (F+2+pad+4)/3 beats instead of F+2 and its F+8-bit square root
-    // ceil((F+8)/3) instead of F+8 (rtl/csgrt_unit.v)
+    // ceil((F+8)/3) instead of F+8 (rtl/csgrt_unit.v). Written out here
+    // from the divider's schedule on purpose, not read from the RTL's
+    // csgrt_unit_div_beats(): a test that took the unit's own count would
+    // pass with that count wrong.
     const int child_clocks = 2 * F + 19;
     const int div_beats = (F + 2 + (5 - (F + 2) % 3) % 3 + 4) / 3;
     const int sqrt_beats = (F + 8 + 2) / 3;
