@@ -145,8 +145,8 @@ module csgrt_contrib #(
     // first net of a path through csgrt_spawn's output skid into its beat,
     // tools/logic_depth.py 11.19 ns on aaa564b's netlist). keep: yosys
     // would merge the two.
-    (* keep *) reg valid_copy_q;
-    always @(posedge clk_i)
+    reg valid_copy_q;
+    (* keep *) always @(posedge clk_i)
         valid_copy_q <= rst_ni && ((m_ready_i || !m_valid_o) ? (!en || (c2_valid && last)) : m_valid_o);
     assign m_valid_copy_o = valid_copy_q;
     csgrt_check_same #(.WHAT("m_valid_copy_o")) u_check_valid_copy (

@@ -1277,8 +1277,12 @@ module csgrt_spawn #(
     // ray tree decides its event from it, while m_valid_o selects its ~1,000
     // record bits (285 loads, the first net of the whole design's longest
     // path: tools/logic_depth.py 12.85 ns). keep: yosys would merge the two.
-    (* keep *) reg valid_copy_q;
-    always @(posedge clk_i)
+    // (* keep *) on the always blocks: the two copies have the same input,
+    // and yosys merged them into one flip-flop with both loads (365, the
+    // first net of a 13.20 ns path on 997a303's netlist) with the keep on
+    // the regs alone
+    reg valid_copy_q;
+    (* keep *) always @(posedge clk_i)
         valid_copy_q <= rst_ni && ((m_ready_i || !m_valid_o) ? (!en_c || (u2_valid && last_c)) : m_valid_o);
     assign m_valid_copy_o = valid_copy_q;
     csgrt_check_same #(.WHAT("m_valid_copy_o")) u_check_valid_copy (
@@ -1287,8 +1291,8 @@ module csgrt_spawn #(
     // first choice (a shadow ray from this port or not) took m_valid_o's
     // 408 loads into the ray FIFO's data (tools/logic_depth.py 10.96 ns,
     // 63 endpoints, on aaa564b's netlist)
-    (* keep *) reg valid_rec_q;
-    always @(posedge clk_i)
+    reg valid_rec_q;
+    (* keep *) always @(posedge clk_i)
         valid_rec_q <= rst_ni && ((m_ready_i || !m_valid_o) ? (!en_c || (u2_valid && last_c)) : m_valid_o);
     assign m_valid_rec_o = valid_rec_q;
     csgrt_check_same #(.WHAT("m_valid_rec_o")) u_check_valid_rec (
