@@ -359,6 +359,10 @@ module csgrt_class_tree #(
             wire [CW+1:0] cf = path_node(op, path_w[j-1], pfz_w[j-1], ptz_w[j-1], sib[MB], sib[MB-1:0],
                                          sib_mz, on_right);
             wire [CW-1:0] c  = cf[CW+1:2];
+`ifndef SYNTHESIS
+            // (not built by synthesis: yosys shared the reference's cells
+            // with path_node's before dropping them, in the mapped netlist
+            // and in its paths)
             wire [CW-1:0] c_sib_right, c_sib_left;
             csgrt_class_node #(.MAT_BITS(MB)) u_node_r (
                 .op_i(op), .l_i(path_w[j-1]), .r_i(sib_c), .c_o(c_sib_right));
@@ -369,6 +373,9 @@ module csgrt_class_tree #(
                 .orig_i(ce_i && chk_vld_q[j-1] ? {on_right ? c_sib_left : c_sib_right,
                                                   c[MB +: MB] == {MB{1'b0}}, c[0 +: MB] == {MB{1'b0}}}
                                                : {(CW + 2){1'b0}}));
+`else
+            wire unused_sib_c = ^sib_c;
+`endif
             reg [CW-1:0] path_q;
             reg [H-1:0]  slot_q;
             reg          pfz_q, ptz_q;
