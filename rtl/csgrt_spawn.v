@@ -1134,10 +1134,17 @@ module csgrt_spawn #(
             // SHADOW: lv; REFLECT, TIR_REFLECT: d (only lv without them; only d without shadows)
             assign base[i*LVW +: LVW] = (SH && (!RDN || c0_kind_q == KIND_SHADOW)) ? l : d_b;
         end
-        csgrt_mul_vec #(.A_WIDTH(XAW), .B_WIDTH(XBW), .N(3), .II(II)) u_mul_x (
+        // Time-shared (II 3), the tiles are registered before their sum
+        // (TILE_REG) at no cost in latency (csgrt_mul_vec: the same two
+        // beats): the routed critical path of aaa564b's 24-bit build was
+        // this multiplier's MULT18X18D output -> 6.43 ns of route across
+        // the die -> the tiles' sum in csgrt_beat_gather (81.33 MHz).
+        // With II 1 the register would cost a clock: not set.
+        localparam X_TILE_REG = (II == 3) ? 1 : 0;
+        csgrt_mul_vec #(.A_WIDTH(XAW), .B_WIDTH(XBW), .N(3), .II(II), .TILE_REG(X_TILE_REG)) u_mul_x (
             .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .adv_i(adv_c), .phase_i(ph_c), .a_i(xa_v), .b_i(xb_v), .p_o(xp));
         if (RF) begin : g_y
-            csgrt_mul_vec #(.A_WIDTH(YAW), .B_WIDTH(YBW), .N(3), .II(II)) u_mul_y (
+            csgrt_mul_vec #(.A_WIDTH(YAW), .B_WIDTH(YBW), .N(3), .II(II), .TILE_REG(X_TILE_REG)) u_mul_y (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .adv_i(adv_c), .phase_i(ph_c), .a_i({3{c0_a_q}}), .b_i(c0_n_q),
                 .p_o(yp));
         end else begin : g_no_y
