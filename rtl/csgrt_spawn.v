@@ -1283,27 +1283,22 @@ module csgrt_spawn #(
     // next value (its skid register is full exactly while en_c is low): the
     // ray tree decides its event from it, while m_valid_o selects its ~1,000
     // record bits (285 loads, the first net of the whole design's longest
-    // path: tools/logic_depth.py 12.85 ns). keep: yosys would merge the two.
-    // (* keep *) on the always blocks: the two copies have the same input,
-    // and yosys merged them into one flip-flop with both loads (365, the
-    // first net of a 13.20 ns path on 997a303's netlist) with the keep on
-    // the regs alone
-    reg valid_copy_q;
-    (* keep *) always @(posedge clk_i)
-        valid_copy_q <= rst_ni && ((m_ready_i || !m_valid_o) ? (!en_c || (u2_valid && last_c)) : m_valid_o);
+    // path: tools/logic_depth.py 12.85 ns).
+    // And a second copy (m_valid_rec_o) for the ray tree's pushed record,
+    // whose first choice (a shadow ray from this port or not) took
+    // m_valid_o's 408 loads into the ray FIFO's data (tools/logic_depth.py
+    // 10.96 ns, 63 endpoints, on aaa564b's netlist). (* keep *) on the
+    // always blocks: the two copies have the same input, and with the keep
+    // on the regs alone yosys merged them into one flip-flop with both
+    // loads (365, the first net of a 13.20 ns path on 997a303's netlist).
+    wire valid_next = rst_ni && ((m_ready_i || !m_valid_o) ? (!en_c || (u2_valid && last_c)) : m_valid_o);
+    reg  valid_copy_q, valid_rec_q;
+    (* keep *) always @(posedge clk_i) valid_copy_q <= valid_next;
+    (* keep *) always @(posedge clk_i) valid_rec_q  <= valid_next;
     assign m_valid_copy_o = valid_copy_q;
-    csgrt_check_same #(.WHAT("m_valid_copy_o")) u_check_valid_copy (
-        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(valid_copy_q), .orig_i(m_valid_o));
-    // and a third (m_valid_rec_o) for the ray tree's pushed record, whose
-    // first choice (a shadow ray from this port or not) took m_valid_o's
-    // 408 loads into the ray FIFO's data (tools/logic_depth.py 10.96 ns,
-    // 63 endpoints, on aaa564b's netlist)
-    reg valid_rec_q;
-    (* keep *) always @(posedge clk_i)
-        valid_rec_q <= rst_ni && ((m_ready_i || !m_valid_o) ? (!en_c || (u2_valid && last_c)) : m_valid_o);
-    assign m_valid_rec_o = valid_rec_q;
-    csgrt_check_same #(.WHAT("m_valid_rec_o")) u_check_valid_rec (
-        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i(valid_rec_q), .orig_i(m_valid_o));
+    assign m_valid_rec_o  = valid_rec_q;
+    csgrt_check_same #(.WIDTH(2), .WHAT("m_valid_copy_o / m_valid_rec_o")) u_check_valid_copy (
+        .clk_i(clk_i), .rst_ni(rst_ni), .copy_i({valid_copy_q, valid_rec_q}), .orig_i({2{m_valid_o}}));
 
     generate
         if (BITS < 12 || BITS > 32 || MAX_LIGHTS < 1 || USER_WIDTH < 1) begin : g_bad_param
