@@ -317,8 +317,7 @@ module csgrt_event_sort #(
     reg [DW-1:0]            p_e0_q, p_e1_q;
     reg                     p_asel_q;      // a = e1 (else e0)
     reg                     p_bsel_q;      // b = e0 (else e1): the pair swapped
-    reg [1:0]               p_n_q;         // events ahead within the limit: 0, 1 or 2
-    reg                     p_two_q;       // p_n_q == 2
+    reg [1:0]               p_n_q;         // events ahead within the limit: 0, 1 or 2 (bit 1: two)
     reg [NLO-1:0]           p_slo_q;
     reg [NHI-1:0]           p_shi_q;
     reg                     p_flag_q, p_last_q;
@@ -371,7 +370,6 @@ module csgrt_event_sort #(
             p_asel_q <= swap || !ahead0;
             p_bsel_q <= swap;
             p_n_q    <= {1'b0, ahead0 && keep0} + {1'b0, ahead1 && keep1};
-            p_two_q  <= ahead0 && keep0 && ahead1 && keep1;
             p_slo_q  <= onehot_lo(slot_i);
             p_shi_q  <= onehot_hi(slot_i);
             p_flag_q <= flag_in;
@@ -671,7 +669,7 @@ module csgrt_event_sort #(
     wire full_d = (s1_done && s1_last_q) || (full_q && !handover);
     wire busy_d = handover || (busy_q && !ray_done_i);
     wire s1_valid_d = in_fire || (s1_valid_q && !s1_done);
-    wire s1_two_d   = in_fire ? p_two_q : (s1_adv && s1_split) ? 1'b0 : s1_two_q;
+    wire s1_two_d   = in_fire ? p_n_q[1] : (s1_adv && s1_split) ? 1'b0 : s1_two_q;
     wire fb_d       = full_d && busy_d;
     // in_ready_q's next value, from private copies of the state it reads
     // (rc_*, each loaded as its original, in an always block of its own
@@ -693,7 +691,7 @@ module csgrt_event_sort #(
     wire rc_full_d = (rc_done && s1_last_q) || (rc_full_q && !handover_q);
     wire rc_busy_d = handover_q || (rc_busy_q && !ray_done_i);
     wire rc_valid_d = rc_fire || (rc_valid_q && !rc_done);
-    wire rc_two_d  = rc_fire ? p_two_q : s1_two_q && !rc_adv;
+    wire rc_two_d  = rc_fire ? p_n_q[1] : s1_two_q && !rc_adv;
     wire in_ready_d = !rst_ni || !rc_valid_d || (!(rc_full_d && rc_busy_d) && !((INSERTS == 1) && rc_two_d));
     // handover_q's and its copies' (hov) next value, full_q && !busy_q after
     // the edge, from the copies too: from full_d and busy_d it took the same
