@@ -207,8 +207,8 @@ module csgrt_raytree #(
     reg [11:0]         y_q     [0:P-1];
     (* mem2reg *) reg [OBW:0] seq_q [0:P-1];   // registers, not a memory (yosys)
     // each context's output buffer slot also one-hot, written with seq_q:
-    // ctp_slot_oh_q and hpp_slot_oh_q (below) choose a code from these
-    // instead of decoding the chosen slot, which was 7 LUT levels from the
+    // ob_set_oh_q (below) chooses a code from these instead of decoding
+    // the chosen slot, which was 7 LUT levels from the
     // contribution's context (tools/logic_depth.py 11.67 ns on 3599434's
     // netlist); u_check_ob_valid sees any difference
     (* mem2reg *) reg [OB-1:0] seq_oh_q [0:P-1];
@@ -748,7 +748,6 @@ module csgrt_raytree #(
     reg  [38:0]    ctp_sum_q;
     reg            ctp_more_q;          // its stack has a pending child
     reg  [OBW-1:0] ctp_slot_q;
-    reg  [OB-1:0]  ctp_slot_oh_q;       // ctp_slot_q one-hot (ob_set below)
     reg  [23:0]    ctp_xy_q;
     always @(posedge clk_i) begin
         if (ct_valid) begin
@@ -756,7 +755,6 @@ module csgrt_raytree #(
             ctp_sum_q  <= add_sat(acc_q[ct_ctx], ct_contrib);
             ctp_more_q <= sp_q[ct_ctx] != {SPW{1'b0}};
             ctp_slot_q <= seq_q[ct_ctx][OBW-1:0];
-            ctp_slot_oh_q <= seq_oh_q[ct_ctx];
             ctp_xy_q   <= {y_q[ct_ctx], x_q[ct_ctx]};
         end
     end
@@ -783,13 +781,11 @@ module csgrt_raytree #(
     reg  [38:0]    hpp_sum_q;
     reg            hpp_more_q;
     reg  [OBW-1:0] hpp_slot_q;
-    reg  [OB-1:0]  hpp_slot_oh_q;
     reg  [23:0]    hpp_xy_q;
     always @(posedge clk_i) begin
         hpp_sum_q  <= add_sat(acc_q[h_ctx], hp_bg);
         hpp_more_q <= sp_q[h_ctx] != {SPW{1'b0}};
         hpp_slot_q <= seq_q[h_ctx][OBW-1:0];
-        hpp_slot_oh_q <= seq_oh_q[h_ctx];
         hpp_xy_q   <= {y_q[h_ctx], x_q[h_ctx]};
     end
 `ifndef SYNTHESIS
@@ -851,8 +847,27 @@ module csgrt_raytree #(
     // Decoded from ob_slot, each bit's set waited for ev_ct's choice of
     // slot (102 loads) and the decode (tools/logic_depth.py 13.68 ns out of
     // context); a simulation check compares them with that decode.
-    wire [OB-1:0]  ob_set  = ev_ct ? (ctp_more_q ? {OB{1'b0}} : ctp_slot_oh_q)
-                                   : (hp_ends ? hpp_slot_oh_q : {OB{1'b0}});
+    // The slot's one-hot code is itself a register (ob_set_oh_q, loaded in
+    // E0 beside ob_we_q from the same event choice), so the set is the
+    // write enable and the code: as ev_ct's choice between the two
+    // events' codes and stack tests, then the retire pointer's 16-way
+    // choice of it, it ran 8 LUT levels into ob_hv_q (tools/logic_depth.py
+    // 12.52 ns on 911d777's netlist). Checked against that choice.
+    reg  [OB-1:0]  ob_set_oh_q;
+    always @(posedge clk_i)
+        ob_set_oh_q <= ev0_ct ? seq_oh_q[ct_ctx] : seq_oh_q[h_ctx];
+    wire [OB-1:0]  ob_set  = ob_we_q ? ob_set_oh_q : {OB{1'b0}};
+`ifndef SYNTHESIS
+    // the two events' codes as they were: ctp_slot_q's and hpp_slot_q's one-hot
+    reg  [OB-1:0]  ctp_slot_oh_q, hpp_slot_oh_q;
+    always @(posedge clk_i) begin
+        if (ct_valid) ctp_slot_oh_q <= seq_oh_q[ct_ctx];
+        hpp_slot_oh_q <= seq_oh_q[h_ctx];
+    end
+    csgrt_check_same #(.WIDTH(OB), .WHAT("ob_set (the output buffer's valid bit set, from ob_set_oh_q)")) u_check_ob_set (
+        .clk_i, .rst_ni, .copy_i(ob_set),
+        .orig_i(ev_ct ? (ctp_more_q ? {OB{1'b0}} : ctp_slot_oh_q) : (hp_ends ? hpp_slot_oh_q : {OB{1'b0}})));
+`endif
     wire [OB-1:0]  ob_clr  = (o_adv ? slot_onehot(retire_q[OBW-1:0]) : {OB{1'b0}}) & ob_valid_q;
     // E1's pushes: the records were loaded at the end of E0 (rq_*, spq_data)
     assign rq_push  = (ev_ch && e_ch_kind == K_SHADOW && e_ch_lit) || (ev_hp && e_h_shadow && !e_sh_ends)
