@@ -167,8 +167,9 @@ module csgrt_scene_loader #(
     reg  [3:0]             s1_e_q;
     wire [3:0]             s1_err = s1_e_q[3] ? 4'd4 : {2'b0, s1_e_q[1] | s1_e_q[2], s1_e_q[0] | s1_e_q[2]};
     reg                    s1_bad_height_q;
-    // Stage 2 writes the camera, the lights, the materials and the leaves,
-    // from enables (and for the memories an address) decoded in stage 1:
+    // Stage 2 writes the camera, the lights, the materials, the leaves and
+    // the tree's operators and slot materials, from enables (and for the
+    // memories an address) decoded in stage 1:
     // one register per word position. Decoded and written in stage 1, an
     // item's 32-bit compare (the item < MAX_LIGHTS, MAX_MATERIALS or
     // MAX_LEAVES: a carry chain behind section_start_q's mux) led into the
@@ -188,6 +189,14 @@ module csgrt_scene_loader #(
     reg                         s2_mat_we_q;                  // a material's last word: its record
     reg  [7:0]                  s2_mat_addr_q;                // its entry (material index: item + 1)
     reg                         s2_leaf_we_q;                 // a leaf's last word: its coefficients and material
+    // the tree's operator at heap position j + 1 (s2_op_we_q[j]) and slot
+    // j's material (s2_slot_we_q[j], the material read in stage 1:
+    // s2_slot_mat_q). Written in stage 1, their enables' decode (the word's
+    // slot or the operator's position, and the section's flags) ran on into
+    // the class trees' configuration registers in every lane, across the
+    // die (tools/logic_depth.py: the load's paths into node_op_i).
+    reg  [SLOTS-1:0]            s2_op_we_q, s2_slot_we_q;
+    reg  [7:0]                  s2_slot_mat_q;
     reg  [LEAF_BITS-1:0]        s2_leaf_addr_q;
     // The camera word's position, decoded in stage 0 (s1_cam_we_q[k]: the
     // word is camera word k), so that stage 1 only passes the bits on.
@@ -216,6 +225,8 @@ module csgrt_scene_loader #(
     always @(posedge clk_i) begin
         // stage 2's enables last a clock (stage 1 sets them), reset or not
         s2_cam_we_q   <= {CAM_WORDS{1'b0}};
+        s2_op_we_q    <= {SLOTS{1'b0}};
+        s2_slot_we_q  <= {SLOTS{1'b0}};
         s2_light_we_q <= {(MAX_LIGHTS*LIGHT_WORDS){1'b0}};
         s2_mat_we_q   <= 1'b0;
         s2_leaf_we_q  <= 1'b0;
@@ -348,21 +359,20 @@ module csgrt_scene_loader #(
                 end
 
                 // ---- tree: height, 2^H operators, one slot per leaf
+                // (the operators and the slots' materials: stage 2's enables)
                 if (in_tree_q) begin
                     if (tree_first_q) begin
                         if (s1_bad_height_q) error_o <= 4'd5;
                     end else if (tree_op_q) begin
                         for (j = 0; j < SLOTS; j = j + 1)
-                            if (op32 == j) node_op_o[j * 2 +: 2] <= w[1:0];
+                            if (op32 == j) s2_op_we_q[j] <= 1'b1;
                     end else if (tree_leaf_ok_q) begin
                         leaf_slot_mem[tree_leaf_q] <= w[TREE_HEIGHT-1:0];
                         for (j = 0; j < SLOTS; j = j + 1)
-                            if (slot32 == j) begin
-                                slot_material_o[j * 8 +: 8] <= leaf_mat_q[tree_leaf_q];
-                                slot_used_o[j] <= 1'b1;
-                            end
+                            if (slot32 == j) s2_slot_we_q[j] <= 1'b1;
                     end
                 end
+                s2_slot_mat_q <= leaf_mat_q[tree_leaf_q];
             end
 
             // ---- stage 2: camera, lights, materials, leaves, and loaded_o
@@ -378,6 +388,13 @@ module csgrt_scene_loader #(
             if (s2_leaf_we_q) begin
                 leaf_coef_mem[s2_leaf_addr_q] <= coef_acc_q;
                 leaf_mat_q[s2_leaf_addr_q]    <= s2_w_q[7:0];
+            end
+            for (j = 0; j < SLOTS; j = j + 1) begin
+                if (s2_op_we_q[j]) node_op_o[j * 2 +: 2] <= s2_w_q[1:0];
+                if (s2_slot_we_q[j]) begin
+                    slot_material_o[j * 8 +: 8] <= s2_slot_mat_q;
+                    slot_used_o[j] <= 1'b1;
+                end
             end
             for (j = 0; j < 3; j = j + 1) begin
                 if (s2_cam_we_q[j])      cam_origin_o[j*BITS +: BITS] <= s2_w_q[BITS-1:0];
