@@ -167,6 +167,7 @@ module csgrt_scene_loader #(
     reg  [3:0]             s1_e_q;
     wire [3:0]             s1_err = s1_e_q[3] ? 4'd4 : {2'b0, s1_e_q[1] | s1_e_q[2], s1_e_q[0] | s1_e_q[2]};
     reg                    s1_bad_height_q;
+    reg                    s1_max_trace_q, s1_big_q;   // the trace depth's header word, and over 255
     // Stage 2 writes the camera, the lights, the materials, the leaves and
     // the tree's operators and slot materials, from enables (and for the
     // memories an address) decoded in stage 1:
@@ -290,7 +291,12 @@ module csgrt_scene_loader #(
                 if (hdr_q[H_LIGHTS]) begin
                     num_lights_o <= word_i[3:0];
                 end
-                if (hdr_q[H_MAX_TRACE])     max_trace_o     <= (word_i > 32'd255) ? 8'd255 : word_i[7:0];
+                // the trace depth, saturated at 255, is written in stage 1
+                // from these (the 24-bit test and the choice in front of its
+                // enable were a 4-level path from the word's valid bit,
+                // tools/logic_depth.py 10.98 ns)
+                s1_max_trace_q  <= hdr_q[H_MAX_TRACE];
+                s1_big_q        <= word_i[31:8] != 24'd0;
                 if (hdr_q[H_OFF_CAMERA])    off_camera_q    <= word_i;
                 if (hdr_q[H_OFF_LIGHTS])    off_lights_q    <= word_i;
                 if (hdr_q[H_OFF_MATERIALS]) off_materials_q <= word_i;
@@ -303,6 +309,7 @@ module csgrt_scene_loader #(
             if (s1_valid_q) begin
                 // ---- stage 1: the sections' writes
                 if (s1_e_q != 4'd0) error_o <= s1_err;   // a header word's check
+                if (s1_max_trace_q) max_trace_o <= s1_big_q ? 8'd255 : w[7:0];
 
                 // ---- camera: origin (3), base/dx/dy (3 x 2 words each), background (3): stage 2's enables
                 s2_cam_we_q <= s1_cam_we_q;
