@@ -852,21 +852,16 @@ module csgrt_raytree #(
     // write enable and the code: as ev_ct's choice between the two
     // events' codes and stack tests, then the retire pointer's 16-way
     // choice of it, it ran 8 LUT levels into ob_hv_q (tools/logic_depth.py
-    // 12.52 ns on 911d777's netlist). Checked against that choice.
+    // 12.52 ns on 911d777's netlist). Checked against the decode of the
+    // write's slot.
     reg  [OB-1:0]  ob_set_oh_q;
     always @(posedge clk_i)
         ob_set_oh_q <= ev0_ct ? seq_oh_q[ct_ctx] : seq_oh_q[h_ctx];
     wire [OB-1:0]  ob_set  = ob_we_q ? ob_set_oh_q : {OB{1'b0}};
 `ifndef SYNTHESIS
-    // the two events' codes as they were: ctp_slot_q's and hpp_slot_q's one-hot
-    reg  [OB-1:0]  ctp_slot_oh_q, hpp_slot_oh_q;
-    always @(posedge clk_i) begin
-        if (ct_valid) ctp_slot_oh_q <= seq_oh_q[ct_ctx];
-        hpp_slot_oh_q <= seq_oh_q[h_ctx];
-    end
+    // (the write's slot decoded: ob_we_q itself is checked above)
     csgrt_check_same #(.WIDTH(OB), .WHAT("ob_set (the output buffer's valid bit set, from ob_set_oh_q)")) u_check_ob_set (
-        .clk_i, .rst_ni, .copy_i(ob_set),
-        .orig_i(ev_ct ? (ctp_more_q ? {OB{1'b0}} : ctp_slot_oh_q) : (hp_ends ? hpp_slot_oh_q : {OB{1'b0}})));
+        .clk_i, .rst_ni, .copy_i(ob_set), .orig_i(ob_we ? slot_onehot(ob_slot) : {OB{1'b0}}));
 `endif
     wire [OB-1:0]  ob_clr  = (o_adv ? slot_onehot(retire_q[OBW-1:0]) : {OB{1'b0}}) & ob_valid_q;
     // E1's pushes: the records were loaded at the end of E0 (rq_*, spq_data)
