@@ -172,14 +172,15 @@
 // take most of the LUTs in every configuration.
 //
 // ---- Timing --------------------------------------------------------------------
-// Latency (no back-pressure, idle front): 5F+66 clocks from a hit's
-// acceptance to its first child (BITS 12: 111, 16: 131, 24: 171, 32: 211);
-// without REFRACTION 4F+60 (the sequencer takes the hit from the normal's
-// queue, F+6 clocks before S6 would have finished: BITS 12: 96, 16: 112,
-// 24: 144, 32: 176; 4F+56 before the queue moved to block RAM, whose head
+// Latency (no back-pressure, idle front): 5F+67 clocks from a hit's
+// acceptance to its first child (BITS 12: 112, 16: 132, 24: 172, 32: 212);
+// without REFRACTION 4F+61 (the sequencer takes the hit from the normal's
+// queue, F+6 clocks before S6 would have finished: BITS 12: 97, 16: 113,
+// 24: 145, 32: 177; 4F+56 before the queue moved to block RAM, whose head
 // comes one clock later, two clocks less before the gradient's products
 // and the normal's squares were registered ahead of their sums, gp_q and
-// ggp_q, and one less before T's tiles were, u_mul_t's TILE_REG). The
+// ggp_q, one less before T's tiles were, u_mul_t's TILE_REG, and one
+// less before n . d's were, u_mul_nd's). The
 // consumer (csgrt_raytree) takes children by valid/ready and m_user_o and
 // assumes no latency.
 // Throughput: one child per clock while hits are waiting at the sequencer:
@@ -722,12 +723,18 @@ module csgrt_spawn #(
     end
     wire [NDPW-1:0] ndp;
     wire            unused_fd_v;
-    csgrt_mul #(.A_WIDTH(NW), .B_WIDTH(B)) u_mul_nd (
+    // TILE_REG: the tiles' values registered before their sum, as T's, so
+    // that the sum and nd_acc_q's accumulation start from flip-flops beside
+    // them and not at the MULT18X18D's output (88832ca's routed critical
+    // path at BITS 24 with shadows and reflection, 77.01 MHz: 7.14 ns of
+    // route from the block to the tiles' sum). One clock more.
+    localparam ND_TILE_REG = 1;
+    csgrt_mul #(.A_WIDTH(NW), .B_WIDTH(B), .TILE_REG(ND_TILE_REG)) u_mul_nd (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(no_valid_q),
         .a_i(no_n_q), .b_i(no_dj), .valid_o(unused_fd_v), .p_o(ndp));
     wire       nd_valid;
     wire [1:0] nd_col;
-    csgrt_delay #(.WIDTH(2), .STAGES(2)) u_dly_nd (
+    csgrt_delay #(.WIDTH(2), .STAGES(2 + ND_TILE_REG)) u_dly_nd (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(no_valid_q),
         .data_i(no_ph_q), .valid_o(nd_valid), .data_o(nd_col));
     reg [NDSW-1:0] nd_acc_q;
@@ -739,6 +746,15 @@ module csgrt_spawn #(
             nd_acc_q <= ((nd_col == 2'd0) ? {NDSW{1'b0}} : nd_acc_q) + {{(NDSW-NDPW){ndp[NDPW-1]}}, ndp};
     end
 
+    // the whole n, a clock later with n . d (ND_TILE_REG): the next hit's
+    // n_2 may replace nh2_n_q three clocks after this one's, the clock
+    // NDA now takes it
+    wire [3*NW-1:0] nda_n_in;
+    wire            unused_nh_v;
+    csgrt_delay #(.WIDTH(3 * NW), .STAGES(ND_TILE_REG)) u_dly_nh (
+        .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(1'b1), .valid_i(1'b0),
+        .data_i(nh2_n_q), .valid_o(unused_nh_v), .data_o(nda_n_in));
+
     // ---- NDA: face the ray (exact sign of n . d) --------------------------------------------
     wire            flip = !nd_acc_q[NDSW-1] && (nd_acc_q != {NDSW{1'b0}});
     reg             nda_valid_q;
@@ -747,7 +763,7 @@ module csgrt_spawn #(
         if (!rst_ni) nda_valid_q <= 1'b0;
         else nda_valid_q <= nd_done_q;
         for (k = 0; k < 3; k = k + 1)
-            nda_n_q[k*NW +: NW] <= flip ? {NW{1'b0}} - nh2_n_q[k*NW +: NW] : nh2_n_q[k*NW +: NW];
+            nda_n_q[k*NW +: NW] <= flip ? {NW{1'b0}} - nda_n_in[k*NW +: NW] : nda_n_in[k*NW +: NW];
     end
 
     // ---- NDB: dn = rnd(d . n, F) (REFLECTION or REFRACTION) ----------------------------------

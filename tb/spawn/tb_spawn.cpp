@@ -679,12 +679,12 @@ TEST(Spawn, Bits24) { all_checks<24>(tb::seed(2400)); }
 TEST(Spawn, Bits32) { all_checks<32>(tb::seed(3200)); }
 
 // Back to back (no gaps, no back-pressure): the latency of an idle unit
-// (5F+66), one child per clock when hits are waiting, a hit every third
+// (5F+67), one child per clock when hits are waiting, a hit every third
 // clock at most; the front holds a hit's credit for 3F+46 clocks and has 32,
 // so at BITS 24 and 32 a hit every (3F+46)/32 clocks at most.
 // Without refraction the sequencer waits for the normal's queue instead of
 // the refraction stages' (F+6 clocks fewer: the normal's queue is block
-// RAM, its head one clock behind a push): latency 4F+60, a credit held
+// RAM, its head one clock behind a push): latency 4F+61, a credit held
 // for 2F+40 clocks. Time-shared children (II = 3): the children's stages
 // before the output skid (2F+19, U2's F+2 division stages replaced by the
 // shared divider's beats) take three clocks each (up to two more to reach
@@ -699,7 +699,7 @@ void throughput(bool reflection = true, bool refraction = true) {
     const csgrt::Formats fmt(NB);
     const int F = fmt.frac;
     constexpr int ii = kII<ID>;
-    const int latency = refraction ? 5 * F + 66 : 4 * F + 60, hold = refraction ? 3 * F + 46 : 2 * F + 40;
+    const int latency = refraction ? 5 * F + 67 : 4 * F + 61, hold = refraction ? 3 * F + 46 : 2 * F + 40;
     // the children's stages before the output skid: C0, X, C3 and U2 (2F+19
     // clocks); time-shared, U2's three divisions on one divider take
     // (F+2+pad+4)/3 beats instead of F+2 and its F+8-bit square root
