@@ -26,12 +26,17 @@
 // advance takes item 2 from d_i itself, items 1 and 0 from one and two
 // clocks back: q_o still holds them for the beat after (the same two beats
 // from the items' entry).
+// LAT_MOD3 = 1: the latency is 1 mod 3 (csgrt_mul_vec's operand register
+// before csgrt_mul with TILE_REG: 4 clocks), item k shows at phase k+1 of
+// the next beat, item 2 at phase 0 of the beat after that, whose advance
+// takes items 2, 1, 0 from two, three and four clocks back: q_o holds them
+// a beat later than above (three beats from the items' entry).
 //
 // Handshake: none; ce_i low (the pipeline's stall) holds everything.
 module csgrt_beat_gather #(
     parameter integer WIDTH = 8,   // result width (>= 1)
     parameter integer N     = 3,   // results per beat (1..3)
-    parameter integer LAT_MOD3 = 2 // the unit's latency mod 3: 2, or 0 (above)
+    parameter integer LAT_MOD3 = 2 // the unit's latency mod 3: 2, 0 or 1 (above)
 ) (
     input  wire               clk_i,
     input  wire               ce_i,      // the pipeline runs
@@ -43,7 +48,8 @@ module csgrt_beat_gather #(
     // d_i of the last three running clocks: at the advance (phase 2) item 0
     // (shown at phase 2 of the beat before) is three clocks back, item 1
     // (phase 0) two, item 2 (phase 1) one
-    // (LAT_MOD3 0: item 2 is d_i, item 1 one clock back, item 0 two)
+    // (LAT_MOD3 0: item 2 is d_i, item 1 one clock back, item 0 two;
+    // LAT_MOD3 1: item 2 two clocks back, item 1 three, item 0 four)
     reg  [WIDTH-1:0] back1_q, back2_q;
     always @(posedge clk_i)
         if (ce_i) begin
@@ -54,6 +60,14 @@ module csgrt_beat_gather #(
     generate
         if (LAT_MOD3 == 0) begin : g_lat0
             assign held = {d_i, back1_q, back2_q};
+        end else if (LAT_MOD3 == 1) begin : g_lat1
+            reg [WIDTH-1:0] back3_q, back4_q;
+            always @(posedge clk_i)
+                if (ce_i) begin
+                    back3_q <= back2_q;
+                    back4_q <= back3_q;
+                end
+            assign held = {back2_q, back3_q, back4_q};
         end else begin : g_lat2
             reg [WIDTH-1:0] back3_q;
             always @(posedge clk_i) if (ce_i) back3_q <= back2_q;
@@ -68,9 +82,9 @@ module csgrt_beat_gather #(
         if (N < 3) begin : g_spare
             wire unused_held = ^held[3*WIDTH-1:N*WIDTH];
         end
-        if (WIDTH < 1 || N < 1 || N > 3 || (LAT_MOD3 != 0 && LAT_MOD3 != 2)) begin : g_bad_param
+        if (WIDTH < 1 || N < 1 || N > 3 || LAT_MOD3 < 0 || LAT_MOD3 > 2) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_beat_gather needs WIDTH >= 1, 1 <= N <= 3, LAT_MOD3 0 or 2");
+                $display("ERROR %m: csgrt_beat_gather needs WIDTH >= 1, 1 <= N <= 3, LAT_MOD3 0, 1 or 2");
                 $finish;
             end
         end

@@ -32,7 +32,20 @@
 // the multiplier at the advance (csgrt_beat_gather LAT_MOD3 0): the same
 // two beats. With II = 1 it is one enabled clock more.
 //
-// Latency: 2 beats (II = 1: 2 + TILE_REG enabled clocks). Handshake: none (the
+// OP_REG = 1 (II = 3 only): the pair of the phase is chosen into a fabric
+// register before csgrt_mul, so that the block's input register is fed by
+// a flip-flop and not by the choice's LUTs (and the choice of the caller's
+// operands before it) across the route to the block: the routed critical
+// path of 911d777's 24-bit build, csgrt_spawn's X product, 2 LUTs then
+// 5.84 ns of route into the block (80.78 MHz). One clock more: with
+// TILE_REG 0 the product comes out three clocks after its pair (the
+// gather's LAT_MOD3 0, two beats still); with TILE_REG 1 four, at phase
+// k+1 of the next beat, and the gather takes pair 2's a beat later
+// (LAT_MOD3 1): three beats. A caller's delay lines take the same count:
+// (II == 3 && OP_REG && TILE_REG) ? 3 : 2.
+//
+// Latency: 2 beats, 3 with II = 3, OP_REG and TILE_REG (II = 1: 2 +
+// TILE_REG enabled clocks). Handshake: none (the
 // enclosing pipeline's stall ce_i; everything holds while it is low).
 // Multipliers: N (II = 1) or 1 (II = 3), each A_WIDTH x B_WIDTH.
 module csgrt_mul_vec #(
@@ -40,7 +53,8 @@ module csgrt_mul_vec #(
     parameter B_WIDTH = 18,   // width of each signed operand b_k (>= 2)
     parameter integer N  = 3, // products (1..3)
     parameter integer II = 1, // 1: one multiplier per product; 3: one shared
-    parameter TILE_REG   = 0  // csgrt_mul's: a register behind each tile (above)
+    parameter TILE_REG   = 0, // csgrt_mul's: a register behind each tile (above)
+    parameter OP_REG     = 0  // II = 3: the chosen pair registered before the multiplier (above)
 ) (
     input  wire                           clk_i,
     input  wire                           rst_ni,    // synchronous, active low
@@ -90,20 +104,30 @@ module csgrt_mul_vec #(
                     b_sel = b_i[B_WIDTH*P2 +: B_WIDTH];
                 end
             end
+            // OP_REG: the chosen pair from a register (csgrt_delay of 0
+            // stages is a wire)
+            wire [A_WIDTH-1:0] a_mul;
+            wire [B_WIDTH-1:0] b_mul;
+            wire               unused_op_v;
+            csgrt_delay #(.WIDTH(A_WIDTH + B_WIDTH), .STAGES(OP_REG != 0 ? 1 : 0)) u_op_reg (
+                .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
+                .data_i({b_sel, a_sel}), .valid_o(unused_op_v), .data_o({b_mul, a_mul}));
             wire [PW-1:0] prod;
             wire          unused_v;
             csgrt_mul #(.A_WIDTH(A_WIDTH), .B_WIDTH(B_WIDTH), .TILE_REG(TILE_REG)) u_mul (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
-                .a_i(a_sel), .b_i(b_sel), .valid_o(unused_v), .p_o(prod));
-            // pair k's product comes out two clocks after phase k (TILE_REG:
-            // three): gathered
-            csgrt_beat_gather #(.WIDTH(PW), .N(N), .LAT_MOD3(TILE_REG != 0 ? 0 : 2)) u_gather (
+                .a_i(a_mul), .b_i(b_mul), .valid_o(unused_v), .p_o(prod));
+            // pair k's product comes out LAT = OP_REG + 2 + TILE_REG clocks
+            // after phase k (2, 3 or 4: 2, 0 or 1 mod 3): gathered
+            localparam integer LAT = (OP_REG != 0 ? 1 : 0) + 2 + (TILE_REG != 0 ? 1 : 0);
+            csgrt_beat_gather #(.WIDTH(PW), .N(N), .LAT_MOD3(LAT % 3)) u_gather (
                 .clk_i(clk_i), .ce_i(ce_i), .adv_i(adv_i), .d_i(prod), .q_o(p_o));
         end
 
-        if (A_WIDTH < 2 || B_WIDTH < 2 || N < 1 || N > 3 || (II != 1 && II != 3)) begin : g_bad_param
+        if (A_WIDTH < 2 || B_WIDTH < 2 || N < 1 || N > 3 || (II != 1 && II != 3) || OP_REG < 0 || OP_REG > 1
+            || (II == 1 && OP_REG != 0)) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_mul_vec needs A_WIDTH, B_WIDTH >= 2, 1 <= N <= 3, II = 1 or 3");
+                $display("ERROR %m: csgrt_mul_vec needs A_WIDTH, B_WIDTH >= 2, 1 <= N <= 3, II = 1 or 3, OP_REG 0 or 1 (0 with II = 1)");
                 $finish;
             end
         end

@@ -136,7 +136,7 @@
 //   C0   (1)        lv = light_k - p and the hit's n, dn, eta, a, d
 //   X/Y  (2)        SHADOW: n_i lv_i; REFLECT, TIR: dn n_i; REFRACT: eta d_i
 //                   and a n_i             6 multipliers shared by every kind
-//                   (Y: REFRACTION only)
+//                   (Y: REFRACTION only; II 3: 3 beats, X_BEATS)
 //   C3   (1)        lit = sum > 0 (exact); r; t; the unit's input v
 //                   (lit: SHADOWS; r: REFLECTION or REFRACTION; t: REFRACTION)
 //   U2   (2F+15)    unit(v)                    csgrt_unit #2, 3 multipliers,
@@ -159,7 +159,9 @@
 // 6 csgrt_mul fewer (REFRACTION 1; 4 with REFRACTION 0), a child every
 // third clock, the children's 2F+19 stages three times as long, but for
 // U2's F+8-bit square root, which finds three result bits per stage
-// (csgrt_unit: ceil((F+8)/3) stages) and its divisions (on one divider).
+// (csgrt_unit: ceil((F+8)/3) stages) and its divisions (on one divider),
+// and for X and Y, one stage more (their operands registered before the
+// blocks, X_OP_REG).
 // yosys 0.23 synth_ecp5 of this module alone, MAX_LIGHTS 8, USER_WIDTH 1,
 // BITS 16, (REFLECTION, REFRACTION) with SHADOWS 1:
 //   (1, 1): MULT18X18D 39, LUT4 17.7k + CCU2C 3.4k, FF 9.5k, DPR16X4 246, DP16KD 3
@@ -1115,6 +1117,9 @@ module csgrt_spawn #(
     wire [XAW-1:0]   xa_eta; // REFRACT's X factor
     wire [3*XAW-1:0] xa_v;   // X's operands, axis i at i*XAW
     wire [3*XBW-1:0] xb_v;
+    localparam X_TILE_REG = (II == 3) ? 1 : 0;
+    localparam X_OP_REG   = (II == 3) ? 1 : 0;
+    localparam X_BEATS    = (II == 3 && X_OP_REG != 0 && X_TILE_REG != 0) ? 3 : 2;   // csgrt_mul_vec's latency
     generate
         if (RF) begin : g_xa_eta
             assign xa_eta = {1'b0, c0_eta_q};
@@ -1156,11 +1161,18 @@ module csgrt_spawn #(
         // this multiplier's MULT18X18D output -> 6.43 ns of route across
         // the die -> the tiles' sum in csgrt_beat_gather (81.33 MHz).
         // With II 1 the register would cost a clock: not set.
-        localparam X_TILE_REG = (II == 3) ? 1 : 0;
-        csgrt_mul_vec #(.A_WIDTH(XAW), .B_WIDTH(XBW), .N(3), .II(II), .TILE_REG(X_TILE_REG)) u_mul_x (
+        // X_OP_REG (II 3): the phase's pair also registered before the
+        // block (csgrt_mul_vec OP_REG): 911d777's routed critical path was
+        // this choice (and the kind's before it) -> 5.84 ns of route into
+        // the block's input register (80.78 MHz). With the tile registers
+        // that makes X and Y three beats (X_BEATS), one beat more for
+        // every child.
+        csgrt_mul_vec #(.A_WIDTH(XAW), .B_WIDTH(XBW), .N(3), .II(II), .TILE_REG(X_TILE_REG),
+                        .OP_REG(X_OP_REG)) u_mul_x (
             .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .adv_i(adv_c), .phase_i(ph_c), .a_i(xa_v), .b_i(xb_v), .p_o(xp));
         if (RF) begin : g_y
-            csgrt_mul_vec #(.A_WIDTH(YAW), .B_WIDTH(YBW), .N(3), .II(II), .TILE_REG(X_TILE_REG)) u_mul_y (
+            csgrt_mul_vec #(.A_WIDTH(YAW), .B_WIDTH(YBW), .N(3), .II(II), .TILE_REG(X_TILE_REG),
+                            .OP_REG(X_OP_REG)) u_mul_y (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(en_c), .adv_i(adv_c), .phase_i(ph_c), .a_i({3{c0_a_q}}), .b_i(c0_n_q),
                 .p_o(yp));
         end else begin : g_no_y
@@ -1170,7 +1182,7 @@ module csgrt_spawn #(
     localparam XSDW = 3 * LVW + 3 + LW + 1;
     wire            x_valid;
     wire [XSDW-1:0] x_side;
-    csgrt_delay #(.WIDTH(XSDW), .STAGES(2)) u_dly_x (
+    csgrt_delay #(.WIDTH(XSDW), .STAGES(X_BEATS)) u_dly_x (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(adv_c), .valid_i(c0_valid_q),
         .data_i({c0_last_q, c0_light_q, c0_kind_q, base}), .valid_o(x_valid), .data_o(x_side));
     wire [3*LVW-1:0] x_base  = x_side[0 +: 3*LVW];

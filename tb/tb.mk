@@ -17,6 +17,7 @@ TB_NAMES     += class_node class_tree walk spawn quadric_at mul mul_vec fifo
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 # the multiplier bench once more as the FPGA build maps csgrt_mul (MULT18X18D tiles)
 TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t0 $(BUILD)/tb/mul_ecp5_t81 $(BUILD)/tb/mul_ecp5_treg $(BUILD)/tb/mul_vec_treg
+TB_BINS      += $(BUILD)/tb/mul_vec_oreg $(BUILD)/tb/mul_vec_oreg0
 ECP5_MODELS  := $(wildcard tb/ecp5/*.v)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_RTL_INC   := $(wildcard rtl/*.vh)   # included by the modules: dependencies only
@@ -73,12 +74,19 @@ $(eval $(call MUL_ECP5_RULE,mul_ecp5_t0,-DCSGRT_LUT_TILE_MAX=0))
 $(eval $(call MUL_ECP5_RULE,mul_ecp5_t81,-DCSGRT_LUT_TILE_MAX=81))
 # and with a register behind each tile (csgrt_mul TILE_REG), fabric tiles of 81 too
 $(eval $(call MUL_ECP5_RULE,mul_ecp5_treg,-DCSGRT_LUT_TILE_MAX=81 -GTILE_REG=1 -CFLAGS -DMUL_TILE_REG=1))
-# the time-shared multiplier with the tile registers (two beats still), tiled
-$(BUILD)/tb/mul_vec_treg: tb/mul_vec/tb_mul_vec.v tb/mul_vec/tb_mul_vec.cpp $(TB_RTL) $(TB_RTL_INC) $(TB_COMMON) $(ECP5_MODELS)
-	@mkdir -p $(BUILD)/tb/mul_vec_treg.obj
-	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP -GTILE_REG=1 --Mdir $(BUILD)/tb/mul_vec_treg.obj --top-module tb_mul_vec \
+# the time-shared multiplier, tiled: $(1) binary name, $(2) parameters and defines
+define MUL_VEC_ECP5_RULE
+$(BUILD)/tb/$(1): tb/mul_vec/tb_mul_vec.v tb/mul_vec/tb_mul_vec.cpp $(TB_RTL) $(TB_RTL_INC) $(TB_COMMON) $(ECP5_MODELS)
+	@mkdir -p $(BUILD)/tb/$(1).obj
+	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP $(2) --Mdir $(BUILD)/tb/$(1).obj --top-module tb_mul_vec \
 	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
-	    -o $(CURDIR)/$(BUILD)/tb/mul_vec_treg $(CURDIR)/tb/mul_vec/tb_mul_vec.v $(CURDIR)/tb/mul_vec/tb_mul_vec.cpp
+	    -o $(CURDIR)/$(BUILD)/tb/$(1) $(CURDIR)/tb/mul_vec/tb_mul_vec.v $(CURDIR)/tb/mul_vec/tb_mul_vec.cpp
+endef
+# with the tile registers (two beats still)
+$(eval $(call MUL_VEC_ECP5_RULE,mul_vec_treg,-GTILE_REG=1))
+# with the operand register as well (three beats), and with it alone (two)
+$(eval $(call MUL_VEC_ECP5_RULE,mul_vec_oreg,-GTILE_REG=1 -GOP_REG=1 -CFLAGS -DMUL_VEC_BEATS=3))
+$(eval $(call MUL_VEC_ECP5_RULE,mul_vec_oreg0,-GOP_REG=1))
 
 .PHONY: tb lint-rtl
 tb: $(TB_BINS)

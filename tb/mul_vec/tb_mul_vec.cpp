@@ -1,6 +1,8 @@
 // tb_mul_vec.cpp — csgrt_mul_vec's contract (rtl/csgrt_mul_vec.v): the
 // operands given during beat k (steady for the whole beat) come out as the
-// exact signed products on p_o for every clock of beat k+2, stalls
+// exact signed products on p_o for every clock of beat k+2 (k+3 for the
+// time-shared instances with both OP_REG and TILE_REG: MUL_VEC_BEATS 3,
+// written out by the build rule, not read from the RTL), stalls
 // included, whether the products share one multiplier over a three-clock
 // beat (II = 3; N = 1, 2, 3) or have one each (II = 1). Random operands,
 // new ones at every advance of an instance's beat, and a random clock
@@ -27,6 +29,12 @@ struct Inst { int a, b, n, ii; };
 // tb_mul_vec.v wa / wb / nprod / II, instance by instance
 constexpr Inst kInst[] = {{24, 21, 3, 3}, {17, 18, 2, 3}, {18, 18, 1, 3}, {24, 21, 3, 1}};
 constexpr int kN = 4;
+#ifndef MUL_VEC_BEATS
+#define MUL_VEC_BEATS 2
+#endif
+// the time-shared instances' latency in beats; the unshared one (II = 1) always has 2
+constexpr int kBeats3 = MUL_VEC_BEATS;
+int beats_of(int k) { return kInst[k].ii == 3 ? kBeats3 : 2; }
 
 using tb::get_signed;
 using tb::put_bits;
@@ -86,9 +94,9 @@ Result run(double ce_prob, uint64_t clocks, uint64_t seed) {
         t->eval();
         ++r.adv_checked;
         if (t->adv3_q_o != t->adv3_o || t->adv1_q_o != t->adv1_o) ++r.adv_mismatches;
-        // p_o during beat k+2 shows beat k's products (the deque's front once it holds three beats)
+        // p_o during beat k+B shows beat k's products (B = beats_of: the deque's front once it holds B+1 beats)
         for (int k = 0; k < kN; ++k) {
-            if (beats[k].size() < 3) continue;
+            if (beats[k].size() < size_t(beats_of(k) + 1)) continue;
             const Pairs& p = beats[k].front();
             for (int j = 0; j < kInst[k].n; ++j) {
                 const int64_t want = p.a[j] * p.b[j];
@@ -110,7 +118,7 @@ Result run(double ce_prob, uint64_t clocks, uint64_t seed) {
             if (!adv[k]) continue;   // operands change only after a beat's advance
             beats[k].push_back(fresh(k));
             drive(k, beats[k].back());
-            if (beats[k].size() > 3) beats[k].pop_front();
+            if (beats[k].size() > size_t(beats_of(k) + 1)) beats[k].pop_front();
         }
     }
     return r;
