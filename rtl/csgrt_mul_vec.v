@@ -44,6 +44,10 @@
 // (LAT_MOD3 1): three beats. A caller's delay lines take the same count:
 // (II == 3 && OP_REG && TILE_REG) ? 3 : 2.
 //
+// OP_REG = -1 (the default) sets it where it costs no beat: II = 3 and
+// TILE_REG 0, so that every time-shared multiplier's block is fed from a
+// flip-flop unless its caller chose the tile register instead.
+//
 // Latency: 2 beats, 3 with II = 3, OP_REG and TILE_REG (II = 1: 2 +
 // TILE_REG enabled clocks). Handshake: none (the
 // enclosing pipeline's stall ce_i; everything holds while it is low).
@@ -54,7 +58,8 @@ module csgrt_mul_vec #(
     parameter integer N  = 3, // products (1..3)
     parameter integer II = 1, // 1: one multiplier per product; 3: one shared
     parameter TILE_REG   = 0, // csgrt_mul's: a register behind each tile (above)
-    parameter OP_REG     = 0  // II = 3: the chosen pair registered before the multiplier (above)
+    parameter OP_REG     = -1 // II = 3: the chosen pair registered before the multiplier (above);
+                              // -1: where it is free, i.e. II = 3 with TILE_REG 0 (two beats either way)
 ) (
     input  wire                           clk_i,
     input  wire                           rst_ni,    // synchronous, active low
@@ -67,6 +72,8 @@ module csgrt_mul_vec #(
 );
 
     localparam PW = A_WIDTH + B_WIDTH;
+    // the operand register: as asked, or (-1) where it is free
+    localparam integer OPR = (OP_REG >= 0) ? OP_REG : (II == 3 && TILE_REG == 0) ? 1 : 0;
 
     // adv_i must be the beat's advance: every time-shared unit passes it
     // down to here (csgrt_weigh, csgrt_unit and the direct users alike),
@@ -109,7 +116,7 @@ module csgrt_mul_vec #(
             wire [A_WIDTH-1:0] a_mul;
             wire [B_WIDTH-1:0] b_mul;
             wire               unused_op_v;
-            csgrt_delay #(.WIDTH(A_WIDTH + B_WIDTH), .STAGES(OP_REG != 0 ? 1 : 0)) u_op_reg (
+            csgrt_delay #(.WIDTH(A_WIDTH + B_WIDTH), .STAGES(OPR)) u_op_reg (
                 .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .valid_i(1'b0),
                 .data_i({b_sel, a_sel}), .valid_o(unused_op_v), .data_o({b_mul, a_mul}));
             wire [PW-1:0] prod;
@@ -119,15 +126,15 @@ module csgrt_mul_vec #(
                 .a_i(a_mul), .b_i(b_mul), .valid_o(unused_v), .p_o(prod));
             // pair k's product comes out LAT = OP_REG + 2 + TILE_REG clocks
             // after phase k (2, 3 or 4: 2, 0 or 1 mod 3): gathered
-            localparam integer LAT = (OP_REG != 0 ? 1 : 0) + 2 + (TILE_REG != 0 ? 1 : 0);
+            localparam integer LAT = OPR + 2 + (TILE_REG != 0 ? 1 : 0);
             csgrt_beat_gather #(.WIDTH(PW), .N(N), .LAT_MOD3(LAT % 3)) u_gather (
                 .clk_i(clk_i), .ce_i(ce_i), .adv_i(adv_i), .d_i(prod), .q_o(p_o));
         end
 
-        if (A_WIDTH < 2 || B_WIDTH < 2 || N < 1 || N > 3 || (II != 1 && II != 3) || OP_REG < 0 || OP_REG > 1
-            || (II == 1 && OP_REG != 0)) begin : g_bad_param
+        if (A_WIDTH < 2 || B_WIDTH < 2 || N < 1 || N > 3 || (II != 1 && II != 3) || OP_REG < -1 || OP_REG > 1
+            || (II == 1 && OP_REG == 1)) begin : g_bad_param
             initial begin
-                $display("ERROR %m: csgrt_mul_vec needs A_WIDTH, B_WIDTH >= 2, 1 <= N <= 3, II = 1 or 3, OP_REG 0 or 1 (0 with II = 1)");
+                $display("ERROR %m: csgrt_mul_vec needs A_WIDTH, B_WIDTH >= 2, 1 <= N <= 3, II = 1 or 3, OP_REG -1, 0 or 1 (not 1 with II = 1)");
                 $finish;
             end
         end

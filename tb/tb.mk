@@ -17,7 +17,7 @@ TB_NAMES     += class_node class_tree walk spawn quadric_at mul mul_vec fifo
 TB_BINS      := $(TB_NAMES:%=$(BUILD)/tb/%)
 # the multiplier bench once more as the FPGA build maps csgrt_mul (MULT18X18D tiles)
 TB_BINS      += $(BUILD)/tb/mul_ecp5 $(BUILD)/tb/mul_ecp5_t0 $(BUILD)/tb/mul_ecp5_t81 $(BUILD)/tb/mul_ecp5_treg $(BUILD)/tb/mul_vec_treg
-TB_BINS      += $(BUILD)/tb/mul_vec_oreg $(BUILD)/tb/mul_vec_oreg0
+TB_BINS      += $(BUILD)/tb/mul_vec_oreg $(BUILD)/tb/mul_vec_noop
 ECP5_MODELS  := $(wildcard tb/ecp5/*.v)
 TB_RTL       := $(wildcard rtl/*.v)
 TB_RTL_INC   := $(wildcard rtl/*.vh)   # included by the modules: dependencies only
@@ -84,9 +84,10 @@ $(BUILD)/tb/$(1): tb/mul_vec/tb_mul_vec.v tb/mul_vec/tb_mul_vec.cpp $(TB_RTL) $(
 endef
 # with the tile registers (two beats still)
 $(eval $(call MUL_VEC_ECP5_RULE,mul_vec_treg,-GTILE_REG=1))
-# with the operand register as well (three beats), and with it alone (two)
+# with the operand register as well (three beats), and with neither (two;
+# build/tb/mul_vec has the operand register alone, csgrt_mul_vec's default)
 $(eval $(call MUL_VEC_ECP5_RULE,mul_vec_oreg,-GTILE_REG=1 -GOP_REG=1 -CFLAGS -DMUL_VEC_BEATS=3))
-$(eval $(call MUL_VEC_ECP5_RULE,mul_vec_oreg0,-GOP_REG=1))
+$(eval $(call MUL_VEC_ECP5_RULE,mul_vec_noop,-GOP_REG=0))
 
 .PHONY: tb lint-rtl
 tb: $(TB_BINS)

@@ -7,13 +7,15 @@
 // are MAXW bits, products 2 MAXW bits (sign-extended); the widths are
 // kInst in tb_mul_vec.cpp. TILE_REG = 1 (build/tb/mul_vec_treg, with the
 // MULT18X18D tiles) gives the time-shared instances csgrt_mul's register
-// behind each tile: their latency must stay two beats. OP_REG = 1
-// (build/tb/mul_vec_oreg with TILE_REG = 1: three beats; mul_vec_oreg0
-// without: two) gives them the register after the operand choice.
+// behind each tile: their latency must stay two beats. OP_REG is
+// csgrt_mul_vec's register after the operand choice: -1 (build/tb/mul_vec
+// and mul_vec_treg) as the RTL's callers leave it, on where it is free (so
+// on without TILE_REG, off with it); 1 (mul_vec_oreg, with TILE_REG = 1:
+// three beats); 0 (mul_vec_noop: off, two beats).
 module tb_mul_vec #(
     parameter MAXW     = 32,
     parameter TILE_REG = 0,
-    parameter OP_REG   = 0
+    parameter OP_REG   = -1
 ) (
     input  wire              clk_i,
     input  wire              rst_ni,
@@ -66,7 +68,7 @@ module tb_mul_vec #(
                 assign p_o[(3*k+j)*2*MAXW +: 2*MAXW] = {(2*MAXW){1'b0}};
             end
             csgrt_mul_vec #(.A_WIDTH(WA), .B_WIDTH(WB), .N(NP), .II(II), .TILE_REG(II == 3 ? TILE_REG : 0),
-                           .OP_REG(II == 3 ? OP_REG : 0)) u_mul (
+                           .OP_REG(II == 3 ? OP_REG : -1)) u_mul (
                 .clk_i, .rst_ni, .ce_i, .adv_i((II == 3) ? adv3_o : adv1_o), .phase_i((II == 3) ? phase3_o : phase1),
                 .a_i(a), .b_i(b), .p_o(p));
         end
