@@ -45,33 +45,25 @@ module csgrt_beat_gather #(
     output wire [N*WIDTH-1:0] q_o        // item k at k*WIDTH
 );
 
-    // d_i of the last three running clocks: at the advance (phase 2) item 0
-    // (shown at phase 2 of the beat before) is three clocks back, item 1
-    // (phase 0) two, item 2 (phase 1) one
-    // (LAT_MOD3 0: item 2 is d_i, item 1 one clock back, item 0 two;
-    // LAT_MOD3 1: item 2 two clocks back, item 1 three, item 0 four)
-    reg  [WIDTH-1:0] back1_q, back2_q;
+    // At the advance (phase 2) item 0 (shown at phase 2 of the beat
+    // before) is three clocks back, item 1 (phase 0) two, item 2 (phase 1)
+    // one (LAT_MOD3 0: item 2 is d_i, item 1 one clock back, item 0 two;
+    // LAT_MOD3 1: item 2 two clocks back, item 1 three, item 0 four).
+    // back_q: d_i of the last DEPTH running clocks, one clock back at the
+    // bottom; hist puts d_i itself below, so that hist's entry j is d_i of
+    // j clocks back: item 2 is NEWEST clocks back, items 1 and 0 one and
+    // two more.
+    localparam integer DEPTH  = (LAT_MOD3 == 0) ? 2 : (LAT_MOD3 == 1) ? 4 : 3;
+    localparam integer NEWEST = DEPTH - 2;
+    reg  [DEPTH*WIDTH-1:0] back_q;
     always @(posedge clk_i)
-        if (ce_i) begin
-            back1_q <= d_i;
-            back2_q <= back1_q;
-        end
-    wire [3*WIDTH-1:0] held;   // item k at k*WIDTH
+        if (ce_i) back_q <= {back_q[(DEPTH-1)*WIDTH-1:0], d_i};
+    wire [(DEPTH+1)*WIDTH-1:0] hist = {back_q, d_i};
+    wire [3*WIDTH-1:0] held = {hist[NEWEST*WIDTH +: WIDTH], hist[(NEWEST+1)*WIDTH +: WIDTH],
+                               hist[(NEWEST+2)*WIDTH +: WIDTH]};   // item k at k*WIDTH
     generate
-        if (LAT_MOD3 == 0) begin : g_lat0
-            assign held = {d_i, back1_q, back2_q};
-        end else if (LAT_MOD3 == 1) begin : g_lat1
-            reg [WIDTH-1:0] back3_q, back4_q;
-            always @(posedge clk_i)
-                if (ce_i) begin
-                    back3_q <= back2_q;
-                    back4_q <= back3_q;
-                end
-            assign held = {back2_q, back3_q, back4_q};
-        end else begin : g_lat2
-            reg [WIDTH-1:0] back3_q;
-            always @(posedge clk_i) if (ce_i) back3_q <= back2_q;
-            assign held = {back1_q, back2_q, back3_q};
+        if (NEWEST > 0) begin : g_newer
+            wire unused_newer = ^hist[NEWEST*WIDTH-1:0];   // shifted on, not gathered
         end
     endgenerate
     reg  [N*WIDTH-1:0] q_q;
