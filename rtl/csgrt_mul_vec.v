@@ -42,13 +42,13 @@
 // gather's LAT_MOD3 0, two beats still); with TILE_REG 1 four, at phase
 // k+1 of the next beat, and the gather takes pair 2's a beat later
 // (LAT_MOD3 1): three beats. A caller's delay lines take the same count:
-// (II == 3 && OP_REG && TILE_REG) ? 3 : 2.
+// (II == 3 && OP_REG == 1 && TILE_REG != 0) ? 3 : 2 (OP_REG -1 never adds a beat).
 //
 // OP_REG = -1 (the default) sets it where it costs no beat: II = 3 and
 // TILE_REG 0, so that every time-shared multiplier's block is fed from a
 // flip-flop unless its caller chose the tile register instead.
 //
-// Latency: 2 beats, 3 with II = 3, OP_REG and TILE_REG (II = 1: 2 +
+// Latency: 2 beats, 3 with II = 3, OP_REG 1 and TILE_REG 1 (II = 1: 2 +
 // TILE_REG enabled clocks). Handshake: none (the
 // enclosing pipeline's stall ce_i; everything holds while it is low).
 // Multipliers: N (II = 1) or 1 (II = 3), each A_WIDTH x B_WIDTH.
