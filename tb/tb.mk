@@ -58,36 +58,30 @@ $(BUILD)/tb/$(1): tb/$(1)/tb_$(1).v tb/$(1)/tb_$(1).cpp $(TB_RTL) $(TB_RTL_INC) 
 endef
 $(foreach t,$(TB_NAMES),$(eval $(call TB_RULE,$(t))))
 
-# $(1): binary name, $(2): defines beyond CSGRT_ECP5_DSP
-define MUL_ECP5_RULE
-$(BUILD)/tb/$(1): tb/mul/tb_mul.v tb/mul/tb_mul.cpp $(TB_RTL) $(TB_RTL_INC) $(TB_COMMON) $(ECP5_MODELS)
+# A bench built as the FPGA build maps csgrt_mul (MULT18X18D tiles):
+# $(1) binary name, $(2) the bench (tb/$(2)/tb_$(2).v and .cpp), $(3)
+# parameters and defines beyond CSGRT_ECP5_DSP
+define ECP5_TB_RULE
+$(BUILD)/tb/$(1): tb/$(2)/tb_$(2).v tb/$(2)/tb_$(2).cpp $(TB_RTL) $(TB_RTL_INC) $(TB_COMMON) $(ECP5_MODELS)
 	@mkdir -p $(BUILD)/tb/$(1).obj
-	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP $(2) --Mdir $(BUILD)/tb/$(1).obj --top-module tb_mul \
+	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP $(3) --Mdir $(BUILD)/tb/$(1).obj --top-module tb_$(2) \
 	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
-	    -o $(CURDIR)/$(BUILD)/tb/$(1) $(CURDIR)/tb/mul/tb_mul.v $(CURDIR)/tb/mul/tb_mul.cpp
+	    -o $(CURDIR)/$(BUILD)/tb/$(1) $(CURDIR)/tb/$(2)/tb_$(2).v $(CURDIR)/tb/$(2)/tb_$(2).cpp
 endef
-$(eval $(call MUL_ECP5_RULE,mul_ecp5,))
+$(eval $(call ECP5_TB_RULE,mul_ecp5,mul,))
 # and with no fabric tile at all (LUT_TILE_MAX 0: every corner in a block,
 # as csgrt_spawn's gradient products are built)
-$(eval $(call MUL_ECP5_RULE,mul_ecp5_t0,-DCSGRT_LUT_TILE_MAX=0))
+$(eval $(call ECP5_TB_RULE,mul_ecp5_t0,mul,-DCSGRT_LUT_TILE_MAX=0))
 # and with the larger fabric tiles of tools/synth.sh --lut-tile-max 81
-$(eval $(call MUL_ECP5_RULE,mul_ecp5_t81,-DCSGRT_LUT_TILE_MAX=81))
+$(eval $(call ECP5_TB_RULE,mul_ecp5_t81,mul,-DCSGRT_LUT_TILE_MAX=81))
 # and with a register behind each tile (csgrt_mul TILE_REG), fabric tiles of 81 too
-$(eval $(call MUL_ECP5_RULE,mul_ecp5_treg,-DCSGRT_LUT_TILE_MAX=81 -GTILE_REG=1 -CFLAGS -DMUL_TILE_REG=1))
-# the time-shared multiplier, tiled: $(1) binary name, $(2) parameters and defines
-define MUL_VEC_ECP5_RULE
-$(BUILD)/tb/$(1): tb/mul_vec/tb_mul_vec.v tb/mul_vec/tb_mul_vec.cpp $(TB_RTL) $(TB_RTL_INC) $(TB_COMMON) $(ECP5_MODELS)
-	@mkdir -p $(BUILD)/tb/$(1).obj
-	$(VERILATOR) $(TB_VFLAGS) -y tb/ecp5 -DCSGRT_ECP5_DSP $(2) --Mdir $(BUILD)/tb/$(1).obj --top-module tb_mul_vec \
-	    -CFLAGS "$(TB_CXXFLAGS)" -LDFLAGS "$(TB_LDLIBS)" \
-	    -o $(CURDIR)/$(BUILD)/tb/$(1) $(CURDIR)/tb/mul_vec/tb_mul_vec.v $(CURDIR)/tb/mul_vec/tb_mul_vec.cpp
-endef
-# with the tile registers (two beats still)
-$(eval $(call MUL_VEC_ECP5_RULE,mul_vec_treg,-GTILE_REG=1))
+$(eval $(call ECP5_TB_RULE,mul_ecp5_treg,mul,-DCSGRT_LUT_TILE_MAX=81 -GTILE_REG=1 -CFLAGS -DMUL_TILE_REG=1))
+# the time-shared multiplier with the tile registers (two beats still)
+$(eval $(call ECP5_TB_RULE,mul_vec_treg,mul_vec,-GTILE_REG=1))
 # with the operand register as well (three beats), and with neither (two;
 # build/tb/mul_vec has the operand register alone, csgrt_mul_vec's default)
-$(eval $(call MUL_VEC_ECP5_RULE,mul_vec_oreg,-GTILE_REG=1 -GOP_REG=1 -CFLAGS -DMUL_VEC_BEATS=3))
-$(eval $(call MUL_VEC_ECP5_RULE,mul_vec_noop,-GOP_REG=0))
+$(eval $(call ECP5_TB_RULE,mul_vec_oreg,mul_vec,-GTILE_REG=1 -GOP_REG=1 -CFLAGS -DMUL_VEC_BEATS=3))
+$(eval $(call ECP5_TB_RULE,mul_vec_noop,mul_vec,-GOP_REG=0))
 
 .PHONY: tb lint-rtl
 tb: $(TB_BINS)
