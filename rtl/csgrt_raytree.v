@@ -598,7 +598,26 @@ module csgrt_raytree #(
     wire          shq_any = shq_any_q;
     csgrt_check_same #(.WIDTH(CB + 1), .WHAT("shq_any_q / shq_ctx_q (the context to shade next)")) u_check_shq (
         .clk_i, .rst_ni, .copy_i({shq_any_q, shq_ctx_q}), .orig_i(lowest(shade_q)));
-    wire sh_issue = shq_any && (!sh_valid_q || sh_ready_i);
+    // A request is issued into an empty request register only, so that
+    // the issue (which enables the ~450 request registers and clears the
+    // context's bit in shade_q, on the way back to shq_any_q) depends on
+    // this block's registers alone. With the shading's ready in it, the
+    // loop ran out to csgrt_shade's advance register and back (2af1f56's
+    // FREQ 100 route: shq_any_q, 3.42 ns of route to the issue's LUT
+    // beside the shading, 3.47 ns back, shade_d, lowest(): 12.44 ns).
+    // At II 3 the shading takes a request at most every third clock
+    // (its ready is segment A's advance), and the register refills the
+    // clock after it empties, so no request waits longer for it. At II 1
+    // the shading can take one every clock and the replacement stays.
+    wire sh_issue = shq_any && (!sh_valid_q || (II == 1 && sh_ready_i));
+`ifndef SYNTHESIS
+    // what the II 3 issue relies on: the shading's ready never high two
+    // clocks running (else a request would wait a clock for the register)
+    reg sh_ready_prev_q;
+    always @(posedge clk_i) sh_ready_prev_q <= rst_ni && sh_ready_i;
+    csgrt_check_same #(.WHAT("the shading's ready, high two clocks running at II 3 (no clock between its requests)")) u_check_sh_gap (
+        .clk_i, .rst_ni, .copy_i(II != 1 && sh_ready_prev_q && sh_ready_i), .orig_i(1'b0));
+`endif
     // shade_q's next value: the issued context cleared, then a context set
     // that is ready for shading (its children all spawned and its shadow
     // rays all back), in the events' order of priority:
