@@ -599,10 +599,10 @@ module csgrt_raytree #(
     csgrt_check_same #(.WIDTH(CB + 1), .WHAT("shq_any_q / shq_ctx_q (the context to shade next)")) u_check_shq (
         .clk_i, .rst_ni, .copy_i({shq_any_q, shq_ctx_q}), .orig_i(lowest(shade_q)));
     // A request is issued into an empty request register only, so that
-    // the issue (which enables the ~450 request registers and clears the
+    // the issue (which enables the ~540 request registers at BITS 24 and clears the
     // context's bit in shade_q, on the way back to shq_any_q) depends on
     // this block's registers alone. With the shading's ready in it, the
-    // loop ran out to csgrt_shade's advance register and back (2af1f56's
+    // loop ran out to csgrt_shade's advance register and back (272e988's
     // FREQ 100 route: shq_any_q, 3.42 ns of route to the issue's LUT
     // beside the shading, 3.47 ns back, shade_d, lowest(): 12.44 ns).
     // At II 3 the shading takes a request at most every third clock
