@@ -43,7 +43,9 @@
 //     end of the handshake chain from the event sorter through the
 //     intersection unit and the walker (with HEAD_REG 1 that ready went on
 //     through the head's load, the read register's and the RAM's read
-//     enable into the pointers: tools/logic_depth.py's longest path).
+//     enable into the pointers: tools/logic_depth.py's longest path);
+//     csgrt_raytree's ray FIFO, whose head goes across the die into the
+//     dispatcher's ray queue and is taken on the dispatcher's ready.
 // The RAM reads only entries written at an earlier edge and writes only
 // entries that are not about to be read (the read pointer trails the write
 // pointer and a full RAM takes no write), so a read never meets a write at

@@ -386,7 +386,16 @@ module csgrt_raytree #(
     reg  [3*B-1:0]      rq_o, rq_d;
     reg  [INFO_W-1:0]   rq_info;
     wire                rq_room;
-    csgrt_fifo_block #(.WIDTH(REC_W + 6 * B + INFO_W), .DEPTH(RAY_FIFO)) u_rays (
+    // HEAD_REG 3: the head in fabric registers. Without them the RAM's read
+    // port (5.8 ns from clock to output in nextpnr's model) drove the
+    // dispatcher's ray queue, another block RAM across the die: e7b3e2f's
+    // routed critical path at FREQ 100 (85.56 MHz; 5.83 ns + 5.64 ns of
+    // route). The ping-pong rather than one head register (HEAD_REG 1)
+    // because ray_ready_i is the dispatcher's, decided there: with the
+    // ping-pong it reaches only the head's pointers, not the RAM's read
+    // enable or the ~370 head flip-flops' enables. Still a ray per clock;
+    // one clock more latency, two words more room.
+    csgrt_fifo_block #(.WIDTH(REC_W + 6 * B + INFO_W), .DEPTH(RAY_FIFO), .HEAD_REG(3)) u_rays (
         .clk_i, .rst_ni, .valid_i (rq_push), .ready_o (rq_room), .data_i ({rq_info, rq_d, rq_o, rq_rec}),
         .valid_o (ray_valid_o), .ready_i (ray_ready_i), .data_o ({ray_info_o, ray_d_o, ray_o_o, ray_rec_o}));
 
