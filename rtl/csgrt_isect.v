@@ -141,14 +141,12 @@ module csgrt_isect #(
     // logic read that net (tools/logic_depth.py); csgrt_beat stops a
     // simulation if the two differ
     assign ready_o = adv_q;
-`include "csgrt_mul_tiles.vh"
-    // Above 18 bits (more than one csgrt_mul chunk) the products are sums
-    // of MULT18X18D tiles, and each tile gets a register before their sum
-    // (csgrt_mul TILE_REG): the first routed 24-bit build's critical path
-    // was a P0 tile -> 5.63 ns of route across the die -> the tiles' sum
-    // (docs/fpga.md). A clock more per product stage with II = 1; none with
-    // II = 3 (csgrt_mul_vec).
-    localparam TREG = (csgrt_mul_chunks(B) > 1) ? 1 : 0;
+    // Above 18 bits the products are sums of MULT18X18D tiles, and each
+    // tile gets a register before their sum (csgrt_mul TILE_REG): the
+    // first routed 24-bit build's critical path was a P0 tile -> 5.63 ns
+    // of route across the die -> the tiles' sum (docs/fpga.md). A clock
+    // more per product stage with II = 1; none with II = 3 (csgrt_mul_vec).
+    localparam TREG = (B > 18) ? 1 : 0;
     localparam MUL_LAT = (II == 1) ? 3 + TREG : 2;   // a product stage, in advances
 
     // ---- input: II = 3 registers the pair, which P0's shared multipliers

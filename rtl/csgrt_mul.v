@@ -64,7 +64,6 @@ module csgrt_mul #(
     output wire [A_WIDTH+B_WIDTH-1:0] p_o
 );
 
-`include "csgrt_mul_tiles.vh"
     localparam P_WIDTH = A_WIDTH + B_WIDTH;   // exact signed product width
 
     // valid through the input, output and tile registers (OUT_REG's below)
@@ -107,8 +106,8 @@ module csgrt_mul #(
     // bits, the top chunk N-1 signed, W - 18(N-1) bits (1..18). A tile
     // (i, j) is a_i b_j shifted by 18(i+j); its exact value fits P_WIDTH
     // sign-extended, and the tiles' sum modulo 2^P_WIDTH is the product.
-    localparam NA = csgrt_mul_chunks(A_WIDTH);
-    localparam NB = csgrt_mul_chunks(B_WIDTH);
+    localparam NA = (A_WIDTH + 17) / 18;
+    localparam NB = (B_WIDTH + 17) / 18;
 
     wire [NA*NB*P_WIDTH-1:0] tile;   // each tile's value, extended and shifted
     genvar i, j;

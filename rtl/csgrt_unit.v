@@ -60,7 +60,6 @@ module csgrt_unit #(
 );
 
 `include "csgrt_unit_latency.vh"
-`include "csgrt_mul_tiles.vh"
     localparam LATENCY = csgrt_unit_latency(FRAC, SQRT_STAGES, II);   // beats
     localparam SQ   = SQRT_STAGES;
     localparam QB   = FRAC + 1;           // quotient bits
@@ -85,7 +84,7 @@ module csgrt_unit #(
 
     // ---- M: squares -----------------------------------------------------------
     wire [3*PW-1:0] sq;
-    // At II 3 a square wider than one block (more than one csgrt_mul chunk)
+    // At II 3 a square wider than one block (VW > 18: csgrt_mul's tiles)
     // takes the tile register instead of the operand register; either
     // keeps the two beats (csgrt_mul_vec). The tiles' sum is a carry chain
     // after the blocks, and 2af1f56's routed critical path was a block's
@@ -93,7 +92,7 @@ module csgrt_unit #(
     // -> the gather's register (docs/fpga-timing.md item 25); the operand
     // side has one LUT of choice between its registers and the block.
     // At II 1 the tile register would cost a clock: none there.
-    localparam SQ_TILE_REG = (II == 3 && csgrt_mul_chunks(VW) > 1) ? 1 : 0;
+    localparam SQ_TILE_REG = (II == 3 && VW > 18) ? 1 : 0;
     csgrt_mul_vec #(.A_WIDTH(VW), .B_WIDTH(VW), .N(3), .II(II), .TILE_REG(SQ_TILE_REG)) u_sq (
         .clk_i(clk_i), .rst_ni(rst_ni), .ce_i(ce_i), .adv_i(adv_i), .phase_i(phase_i),
         .a_i(v_i), .b_i(v_i), .p_o(sq));
